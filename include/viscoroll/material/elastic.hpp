@@ -1,0 +1,40 @@
+// viscoroll: a linear elastic half space, the material for which every viscoelastic term of
+// Panek & Kalker (1980) compiles away (f = 0 in Eq. 1).
+#pragma once
+
+#include <boost/math/constants/constants.hpp>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/validate.hpp>
+
+namespace viscoroll {
+
+/// Linear elastic half space of shear modulus mu and Poisson's ratio nu.
+template <RealScalar Real>
+class Elastic {
+ public:
+  using real_type = Real;
+  static constexpr bool is_viscoelastic = false;
+
+  /// Throws std::invalid_argument unless mu > 0 and -1 < nu <= 0.5, both finite.
+  Elastic(Real mu, Real nu) : mu_(mu), nu_(nu) {
+    detail::require_positive("mu", mu);
+    detail::require((boost::math::isfinite)(nu) && nu > -1 && nu <= Real(0.5), "nu", nu,
+                    "-1 < nu <= 0.5");
+  }
+
+  Real mu_d() const { return mu_; }
+  Real nu() const { return nu_; }
+  Real creep_ratio() const { return Real(0); }
+  Real relaxation_time() const { return Real(0); }
+
+  /// (1 - nu) / (2 pi mu): the factor of the Boussinesq equation (3).
+  Real instantaneous_compliance() const {
+    return (1 - nu_) / (2 * boost::math::constants::pi<Real>() * mu_);
+  }
+  Real long_term_compliance() const { return instantaneous_compliance(); }
+
+ private:
+  Real mu_, nu_;
+};
+
+}  // namespace viscoroll
