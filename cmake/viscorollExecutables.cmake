@@ -1,0 +1,20 @@
+# viscoroll_add_programs(<aggregate-target> SOURCES <files>... [LINK <libs>...])
+# One executable per source, named after the file (stem), written to ${CMAKE_BINARY_DIR}/bin
+# and made a dependency of <aggregate-target>. Sets VISCOROLL_ADDED_PROGRAMS in the caller's
+# scope to the list of targets created.
+function(viscoroll_add_programs aggregate)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "SOURCES;LINK")
+  set(_added)
+  foreach(_source IN LISTS ARG_SOURCES)
+    get_filename_component(_name ${_source} NAME_WE)
+    if(TARGET ${_name})
+      message(FATAL_ERROR "${_source}: a target named '${_name}' already exists; rename the file")
+    endif()
+    add_executable(${_name} ${_source})
+    target_link_libraries(${_name} PRIVATE viscoroll::viscoroll viscoroll_warnings ${ARG_LINK})
+    set_target_properties(${_name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+    add_dependencies(${aggregate} ${_name})
+    list(APPEND _added ${_name})
+  endforeach()
+  set(VISCOROLL_ADDED_PROGRAMS ${_added} PARENT_SCOPE)
+endfunction()
