@@ -1,0 +1,402 @@
+// Independent reference solver for the plane problem: a rigid cylinder rolling on a standard
+// linear solid half space (Hunter 1961), by spectral collocation of Hunter's Eq. (2).
+//
+// References:
+//   S. C. Hunter, "The rolling contact of a rigid cylinder with a viscoelastic half space",
+//     J. Appl. Mech. 28 (1961) 611-617.
+//   C. Panek & J. J. Kalker, "Three-dimensional contact of a rigid roller traversing a
+//     viscoelastic half space", J. Inst. Maths Applics 26 (1980), Section 2, Eq. (2).
+//   Derivation, identities and the measured convergence: docs/hunter-collocation.md.
+//
+// Test code only. It deliberately does NOT use the pseudo-pressure formulas (7), (32)-(36) of
+// Panek & Kalker, so that it can check the library's plane solver, which is built from them.
+//
+// Frame moving with the cylinder, which travels towards +x; contact on [b - a, b + a];
+// c = (1 - nu) / (2 pi mu_D); f = creep ratio; vt = V tau. Unknowns:
+//   p(b + a s) = sqrt(1 - s^2) sum_{n<N} c_n U_n(s),
+// and b; collocation of u'(x) = -C1 x at the N + 1 Chebyshev points of the first kind; the
+// half width a by a scalar root find on the load  W = a (pi / 2) c_0.
+#ifndef VISCOROLL_TESTS_SUPPORT_HUNTER_COLLOCATION_HPP
+#define VISCOROLL_TESTS_SUPPORT_HUNTER_COLLOCATION_HPP
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace viscoroll::testing {
+
+/// Result of hunter_reference(): the steady rolling solution of the plane problem.
+template <class Real>
+struct HunterReference {
+  Real a{};               ///< contact half width
+  Real b{};               ///< offset of the contact centre ahead of the cylinder axis (towards +x)
+  Real chi{};             ///< rolling friction C1 int x p dx / int p dx (x from the axis)
+  Real pmax{};            ///< maximum pressure
+  Real pmax_x{};          ///< where the maximum is (moving frame, from the axis)
+  Real load{};            ///< a (pi/2) c_0: the load the coefficients carry (= W when converged)
+  int n_terms{};          ///< N, number of Chebyshev terms
+  bool converged{false};  ///< root find on a bracketed and converged, LU residual small
+  std::vector<Real> coeffs;  ///< c_n: p(b + a s) = sqrt(1 - s^2) sum c_n U_n(s)
+  Real residual{};           ///< max |A x - r| / (|A|_inf |x|_inf + |r|_inf) of the last solve
+  Real rcond{};              ///< reciprocal condition estimate of the collocation matrix
+  int root_evaluations{};    ///< number of linear solves spent on the root find for a
+
+  /// Contact pressure at x (moving frame); zero outside [b - a, b + a].
+  Real pressure(Real x) const {
+    const Real s = (x - b) / a;
+    if (!(s > -1 && s < 1)) return Real(0);
+    Real u_prev = 0, u = 1, sum = 0;  // U_{-1} = 0, U_0 = 1
+    for (const Real c : coeffs) {
+      sum += c * u;
+      const Real next = 2 * s * u - u_prev;
+      u_prev = u;
+      u = next;
+    }
+    using std::sqrt;
+    return sqrt((1 - s) * (1 + s)) * sum;
+  }
+};
+
+namespace hunter_detail {
+
+/// Composite 30-point Gauss-Legendre: calls g(x, w) for every node of [lo, hi] split into
+/// `panels` equal panels.
+template <class Real, class G>
+void gauss_panels(Real lo, Real hi, std::int64_t panels, G&& g) {
+  using rule = boost::math::quadrature::gauss<Real, 30>;
+  const auto& x = rule::abscissa();
+  const auto& w = rule::weights();
+  const Real h = (hi - lo) / Real(panels);
+  for (std::int64_t k = 0; k < panels; ++k) {
+    const Real mid = lo + (Real(k) + Real(0.5)) * h;
+    const Real half = h / 2;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      g(mid - half * x[i], half * w[i]);
+      g(mid + half * x[i], half * w[i]);
+    }
+  }
+}
+
+/// Quadrature resolution. Each 30-point panel spans at most `step_exponent` of decay of the
+/// weight e^{-eta} and at most `step_phase` radians of the fastest Chebyshev oscillation
+/// cos((n+1) phi) (or of e^{-(n+1) theta}). With both <= 8 the Gauss-Legendre error on a
+/// panel is below (8/2)^60/60! ~ 1e-46 of the integrand scale (docs/hunter-collocation.md).
+template <class Real>
+struct QuadratureSettings {
+  Real step_exponent = 8;
+  Real step_phase = 8;
+  /// The memory weight is cut where e^{-eta} < e^{-cutoff}; cutoff = -ln(eps) + 6.
+  Real cutoff = -std::log(std::numeric_limits<Real>::epsilon()) + 6;
+};
+
+/// Number of sub-panels so that (n_max + 1) * width <= step_phase.
+template <class Real>
+std::int64_t phase_panels(Real width, int n_max, const QuadratureSettings<Real>& q) {
+  using std::ceil;
+  const Real m = ceil(Real(n_max + 1) * width / q.step_phase);
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(m));
+}
+
+/// J_n(v) = int_0^inf e^{-w} H_n(1 + v w) dw, n = 0..n_terms-1, with 1 + v w = cosh(theta):
+/// J_n = (1/v) int_0^inf e^{-(cosh theta - 1)/v} sinh(theta) e^{-(n+1) theta} d theta.
+/// The far-field part of the memory integral: int_{eta_1}^inf = e^{-eta_1} J_n(v).
+template <class Real>
+std::vector<Real> tail_integrals(Real v, int n_terms, const QuadratureSettings<Real>& q = {}) {
+  using std::acosh;
+  using std::exp;
+  using std::sinh;
+  std::vector<Real> out(static_cast<std::size_t>(n_terms), Real(0));
+  const auto theta_of = [v](Real e) { return acosh(1 + v * e); };
+  Real e_lo = 0;
+  while (e_lo < q.cutoff) {
+    const Real e_hi = std::min(q.cutoff, e_lo + q.step_exponent);
+    const Real t_lo = theta_of(e_lo), t_hi = theta_of(e_hi);
+    gauss_panels(t_lo, t_hi, phase_panels(t_hi - t_lo, n_terms, q), [&](Real theta, Real w) {
+      const Real sh = sinh(theta / 2);
+      const Real weight = w * exp(-2 * sh * sh / v) * sinh(theta) / v;
+      const Real r = exp(-theta);
+      Real h = r;  // H_n(cosh theta) = e^{-(n+1) theta}
+      for (int n = 0; n < n_terms; ++n) {
+        out[static_cast<std::size_t>(n)] += weight * h;
+        h *= r;
+      }
+    });
+    e_lo = e_hi;
+  }
+  return out;
+}
+
+/// Memory integrals m_n(s) = int_0^inf e^{-eta} H_n(s + v eta) d eta, n = 0..n_terms-1, at
+/// s = cos(phi_s), 0 < phi_s < pi, v > 0. `tail` = tail_integrals(v, n_terms).
+/// Near part (s + v eta <= 1), with s + v eta = cos(phi_s - delta):
+///   (1/v) int_0^{delta_end} e^{-eta(delta)} sin(phi_s - delta) T_{n+1}(cos(phi_s - delta)) d
+///   delta, eta(delta) = 2 sin(phi_s - delta/2) sin(delta/2) / v,
+/// far part e^{-eta_1} J_n(v), eta_1 = (1 - s)/v, dropped when eta_1 > cutoff. The offset delta
+/// (not phi) is the integration variable so that eta carries a relative, not an absolute
+/// (eps phi_s / v), rounding error when v is small.
+template <class Real>
+std::vector<Real> memory_integrals(Real phi_s, Real v, const std::vector<Real>& tail,
+                                   const QuadratureSettings<Real>& q = {}) {
+  using std::acos;
+  using std::cos;
+  using std::exp;
+  using std::sin;
+  const int n_terms = static_cast<int>(tail.size());
+  std::vector<Real> out(tail.size(), Real(0));
+  const Real s = cos(phi_s);
+  const Real half_sin = sin(phi_s / 2);
+  const Real eta_1 = 2 * half_sin * half_sin / v;  // (1 - s)/v without cancellation
+  const bool reaches_edge = eta_1 <= q.cutoff;
+  const Real e_max = reaches_edge ? eta_1 : q.cutoff;
+  // delta where eta = e; eta is monotone in delta on [0, phi_s].
+  const auto delta_of = [&](Real e) {
+    if (e <= 0) return Real(0);
+    if (reaches_edge && e >= eta_1) return phi_s;
+    return phi_s - acos(std::min(Real(1), s + v * e));
+  };
+  Real e_lo = 0;
+  while (e_lo < e_max) {
+    const Real e_hi = std::min(e_max, e_lo + q.step_exponent);
+    const Real d_lo = delta_of(e_lo), d_hi = delta_of(e_hi);
+    gauss_panels(d_lo, d_hi, phase_panels(d_hi - d_lo, n_terms, q), [&](Real delta, Real w) {
+      const Real eta = 2 * sin(phi_s - delta / 2) * sin(delta / 2) / v;
+      const Real phi = phi_s - delta;
+      const Real cos_phi = cos(phi), sin_phi = sin(phi);
+      const Real weight = w * exp(-eta) * sin_phi / v;
+      // T_{n+1}(cos phi) = cos((n+1) phi) by rotation: rounding grows like n, not n^2 as
+      // the three-term recurrence does near z = +-1.
+      Real t = cos_phi, t_sin = sin_phi;
+      for (int n = 0; n < n_terms; ++n) {
+        out[static_cast<std::size_t>(n)] += weight * t;
+        const Real next = t * cos_phi - t_sin * sin_phi;
+        t_sin = t_sin * cos_phi + t * sin_phi;
+        t = next;
+      }
+    });
+    e_lo = e_hi;
+  }
+  if (reaches_edge) {
+    const Real damp = exp(-eta_1);
+    for (std::size_t n = 0; n < out.size(); ++n) out[n] += damp * tail[n];
+  }
+  return out;
+}
+
+/// Dimensionless collocation solution for a given v = vt / a:
+///   sum_n gamma_n M_n(s_j) - beta = s_j,   c_n = C1 a gamma_n / (2 pi c),  b = a beta.
+template <class Real>
+struct Dimensionless {
+  std::vector<Real> gamma;
+  Real beta{};
+  Real residual{};
+  Real rcond{};
+};
+
+/// Collocation matrix A (N+1 x N+1): A(j, n) = M_n(s_j) for n < N, A(j, N) = -1.
+template <class Real>
+Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> collocation_matrix(
+    Real f, Real v, int n_terms, const QuadratureSettings<Real>& q = {}) {
+  using std::cos;
+  const Real pi = boost::math::constants::pi<Real>();
+  const int rows = n_terms + 1;
+  Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> A(rows, rows);
+  std::vector<Real> tail;
+  if (v > 0) tail = tail_integrals(v, n_terms, q);
+  for (int j = 0; j < rows; ++j) {
+    const Real phi = Real(2 * j + 1) * pi / Real(2 * rows);
+    const Real cos_phi = cos(phi), sin_phi = sin(phi);
+    std::vector<Real> memory;
+    if (v > 0) memory = memory_integrals(phi, v, tail, q);
+    Real t = cos_phi, t_sin = sin_phi;  // T_{n+1}(s_j) = cos((n+1) phi_j)
+    for (int n = 0; n < n_terms; ++n) {
+      // v = 0: the memory integral is int e^{-eta} d eta H_n(s) = H_n(s).
+      const Real mem = v > 0 ? memory[static_cast<std::size_t>(n)] : t;
+      A(j, n) = t + f * mem;  // M_n(s_j) = H_n(s_j) + f m_n(s_j), H_n = T_{n+1} on [-1, 1]
+      const Real next = t * cos_phi - t_sin * sin_phi;
+      t_sin = t_sin * cos_phi + t * sin_phi;
+      t = next;
+    }
+    A(j, n_terms) = Real(-1);  // -beta
+  }
+  return A;
+}
+
+template <class Real>
+Dimensionless<Real> solve_dimensionless(Real f, Real v, int n_terms,
+                                        const QuadratureSettings<Real>& q = {}) {
+  using std::cos;
+  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  const Real pi = boost::math::constants::pi<Real>();
+  const int rows = n_terms + 1;
+  const Matrix A = collocation_matrix(f, v, n_terms, q);
+  Vector rhs(rows);
+  for (int j = 0; j < rows; ++j) rhs(j) = cos(Real(2 * j + 1) * pi / Real(2 * rows));
+  const Eigen::PartialPivLU<Matrix> lu(A);
+  const Vector x = lu.solve(rhs);
+  Dimensionless<Real> out;
+  out.gamma.assign(x.data(), x.data() + n_terms);
+  out.beta = x(n_terms);
+  const Real scale =
+      A.cwiseAbs().rowwise().sum().maxCoeff() * x.cwiseAbs().maxCoeff() + rhs.cwiseAbs().maxCoeff();
+  out.residual = (A * x - rhs).cwiseAbs().maxCoeff() / scale;
+  out.rcond = lu.rcond();
+  return out;
+}
+
+/// q(s) = sum c_n U_n(s) and D(s) = (1 - s^2) q'(s) - s q(s); dp/ds = D / sqrt(1 - s^2).
+template <class Real>
+std::pair<Real, Real> series_and_slope(const std::vector<Real>& c, Real s) {
+  Real u_prev = 0, u = 1, du_prev = 0, du = 0, q = 0, dq = 0;
+  for (const Real cn : c) {
+    q += cn * u;
+    dq += cn * du;
+    const Real next = 2 * s * u - u_prev;
+    const Real dnext = 2 * u + 2 * s * du - du_prev;
+    u_prev = u;
+    u = next;
+    du_prev = du;
+    du = dnext;
+  }
+  return {q, (1 - s) * (1 + s) * dq - s * q};
+}
+
+}  // namespace hunter_detail
+
+/// Reference solution of Hunter's plane problem by collocation of Eq. (2).
+/// @param compliance c = (1 - nu)/(2 pi mu_D), instantaneous
+/// @param f          creep ratio (long-term compliance (1 + f) c)
+/// @param vt         V tau (>= 0; 0 gives the long-term elastic solution)
+/// @param c1         curvature C1 of the profile S = -C1 x^2 / 2 + d
+/// @param load       W, load per unit length
+/// @param n_terms    N, number of Chebyshev terms of p / sqrt(1 - s^2)
+template <class Real>
+HunterReference<Real> hunter_reference(Real compliance, Real f, Real vt, Real c1, Real load,
+                                       int n_terms) {
+  using std::abs;
+  using std::cos;
+  using std::sqrt;
+  if (!(compliance > 0) || !(f >= 0) || !(vt >= 0) || !(c1 > 0) || !(load > 0) || n_terms < 2 ||
+      !std::isfinite(static_cast<double>(f)) || !std::isfinite(static_cast<double>(vt)))
+    throw std::invalid_argument("hunter_reference: need c, C1, W > 0, f, V tau >= 0, N >= 2");
+  const Real pi = boost::math::constants::pi<Real>();
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  const Real a_long = sqrt(4 * compliance * (1 + f) * load / c1);  // long-term Hertz half width
+
+  HunterReference<Real> out;
+  out.n_terms = n_terms;
+  hunter_detail::Dimensionless<Real> last;
+  Real last_ratio = -1;
+  // Load condition in units of the long-term Hertz load: (a/a_L)^2 (1 + f) gamma_0 - 1 = 0.
+  const auto solve_at = [&](Real ratio) {
+    if (ratio != last_ratio) {
+      const Real v = vt / (ratio * a_long);
+      last = hunter_detail::solve_dimensionless(f, v, n_terms);
+      last_ratio = ratio;
+      ++out.root_evaluations;
+    }
+    return last;
+  };
+  const auto load_gap = [&](Real ratio) {
+    return ratio * ratio * (1 + f) * solve_at(ratio).gamma[0] - 1;
+  };
+
+  // Bracket: between the instantaneous and the long-term Hertz half widths; widen if needed.
+  Real lo = 1 / sqrt(1 + f), hi = 1;
+  Real g_lo = load_gap(lo), g_hi = load_gap(hi);
+  bool bracketed = g_lo <= 0 && g_hi >= 0;
+  for (int k = 0; k < 20 && !bracketed; ++k) {
+    if (g_lo > 0) {
+      lo /= Real(1.25);
+      g_lo = load_gap(lo);
+    }
+    if (g_hi < 0) {
+      hi *= Real(1.25);
+      g_hi = load_gap(hi);
+    }
+    bracketed = g_lo <= 0 && g_hi >= 0;
+  }
+  Real ratio = hi;
+  bool root_ok = false;
+  if (bracketed) {
+    if (g_lo == 0) {
+      ratio = lo;
+      root_ok = true;
+    } else if (g_hi == 0) {
+      ratio = hi;
+      root_ok = true;
+    } else {
+      std::uintmax_t max_iter = 200;
+      const auto bracket = boost::math::tools::toms748_solve(
+          load_gap, lo, hi, g_lo, g_hi,
+          boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2), max_iter);
+      ratio = (bracket.first + bracket.second) / 2;
+      root_ok = max_iter < 200;
+    }
+  }
+  const auto sol = solve_at(ratio);
+  const Real a = ratio * a_long;
+  const Real scale = c1 * a / (2 * pi * compliance);
+  out.a = a;
+  out.b = sol.beta * a;
+  out.coeffs.resize(sol.gamma.size());
+  for (std::size_t n = 0; n < sol.gamma.size(); ++n) out.coeffs[n] = scale * sol.gamma[n];
+  out.residual = sol.residual;
+  out.rcond = sol.rcond;
+  out.load = a * pi / 2 * out.coeffs[0];  // int sqrt(1-s^2) U_m U_n ds = (pi/2) delta_mn
+  // int x p dx = b W + a^2 (pi/4) c_1, since s = U_1(s) / 2.
+  const Real c_1 = out.coeffs.size() > 1 ? out.coeffs[1] : Real(0);
+  out.chi = c1 * (out.b + a * a * pi / 4 * c_1 / out.load);
+
+  // Maximum pressure: dense samples uniform in theta (s = cos theta clusters at both edges),
+  // Brent on the best sample's neighbourhood, then the root of dp/ds there.
+  const int samples = 8 * n_terms + 64;
+  const auto p_theta = [&](Real theta) { return out.pressure(out.b + a * cos(theta)); };
+  int best = 0;
+  Real best_p = -std::numeric_limits<Real>::infinity();
+  for (int k = 0; k < samples; ++k) {
+    const Real p = p_theta((Real(k) + Real(0.5)) * pi / Real(samples));
+    if (p > best_p) {
+      best_p = p;
+      best = k;
+    }
+  }
+  const Real t_lo = Real(std::max(0, best - 1)) * pi / Real(samples) + (best == 0 ? eps : 0);
+  const Real t_hi =
+      Real(std::min(samples, best + 2)) * pi / Real(samples) - (best == samples - 1 ? eps : 0);
+  const auto brent = boost::math::tools::brent_find_minima(
+      [&](Real theta) { return -p_theta(theta); }, t_lo, t_hi, std::numeric_limits<Real>::digits);
+  Real s_max = cos(brent.first);
+  // Polish: dp/ds changes sign across the maximum; its root is well conditioned.
+  const auto slope = [&](Real s) { return hunter_detail::series_and_slope(out.coeffs, s).second; };
+  const Real s_a = cos(t_hi), s_b = cos(t_lo);
+  const Real d_a = slope(s_a), d_b = slope(s_b);
+  Real p_max = -brent.second;
+  if (d_a > 0 && d_b < 0) {
+    std::uintmax_t it = 200;
+    const auto r = boost::math::tools::toms748_solve(
+        slope, s_a, s_b, d_a, d_b,
+        boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2), it);
+    s_max = (r.first + r.second) / 2;
+    p_max = out.pressure(out.b + a * s_max);
+  }
+  out.pmax_x = out.b + a * s_max;
+  out.pmax = p_max;
+
+  out.converged = root_ok && abs(out.load - load) <= 64 * eps * load * Real(n_terms) &&
+                  out.residual <= 64 * eps * Real(n_terms);
+  return out;
+}
+
+}  // namespace viscoroll::testing
+
+#endif  // VISCOROLL_TESTS_SUPPORT_HUNTER_COLLOCATION_HPP
