@@ -1,0 +1,47 @@
+// One plane (Hunter) solution: a, b, G and chi (docs/theory.md (P5), (P7)); the pressure at a
+// point (Eq. 35) and the peak search, separately. Target (issue 2): a solution under 100 us.
+#include <benchmark/benchmark.h>
+#include <viscoroll/material/elastic.hpp>
+#include <viscoroll/plane/plane_solver.hpp>
+
+namespace {
+
+template <class Real>
+void BM_plane_solve(benchmark::State& state) {
+  const Real vtau = Real(state.range(0)) / 100;  // V tau / a0 in hundredths
+  const viscoroll::PlaneSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(
+      viscoroll::StandardLinearSolid<Real>(Real(1), Real(0.5), Real(9), vtau));
+  const viscoroll::PlaneScene<Real> scene{Real(1), Real(1), Real(1)};
+  for (auto _ : state) benchmark::DoNotOptimize(solver.solve(scene).chi);
+}
+
+void BM_plane_solve_elastic(benchmark::State& state) {
+  const viscoroll::PlaneSolver<double, viscoroll::Elastic<double>> solver(viscoroll::Elastic<double>(1.0, 0.5));
+  const viscoroll::PlaneScene<double> scene{1.0, 1.0, 1.0};
+  for (auto _ : state) benchmark::DoNotOptimize(solver.solve(scene).a);
+}
+
+template <class Real>
+void BM_plane_pressure_point(benchmark::State& state) {
+  const Real vtau = Real(state.range(0)) / 100;
+  const auto s = viscoroll::PlaneSolver<Real, viscoroll::StandardLinearSolid<Real>>(
+                     viscoroll::StandardLinearSolid<Real>(Real(1), Real(0.5), Real(9), vtau))
+                     .solve({Real(1), Real(1), Real(1)});
+  for (auto _ : state) benchmark::DoNotOptimize(s.pressure(s.b + s.a / 3));
+}
+
+void BM_plane_peak(benchmark::State& state) {
+  const double vtau = double(state.range(0)) / 100;
+  const auto s = viscoroll::PlaneSolverD(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, vtau)).solve({1.0, 1.0, 1.0});
+  for (auto _ : state) benchmark::DoNotOptimize(s.peak().pressure);
+}
+
+}  // namespace
+
+BENCHMARK_TEMPLATE(BM_plane_solve, float)->Arg(1)->Arg(100)->Arg(10000);
+BENCHMARK_TEMPLATE(BM_plane_solve, double)->Arg(1)->Arg(100)->Arg(10000);
+BENCHMARK_TEMPLATE(BM_plane_solve, long double)->Arg(1)->Arg(100)->Arg(10000);
+BENCHMARK(BM_plane_solve_elastic);
+BENCHMARK_TEMPLATE(BM_plane_pressure_point, double)->Arg(1)->Arg(100)->Arg(10000);
+BENCHMARK_TEMPLATE(BM_plane_pressure_point, long double)->Arg(1)->Arg(100);
+BENCHMARK(BM_plane_peak)->Arg(1)->Arg(100)->Arg(10000);

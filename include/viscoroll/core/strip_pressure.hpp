@@ -1,0 +1,220 @@
+// viscoroll: the pressure across one strip of a rolling contact, from the pseudo-pressure.
+//
+// Panek & Kalker (1980), Eqs. (7), (32), (35). A strip is the chord of the contact at one y (or
+// the whole contact of the plane problem): x in [b - a, b + a], with xi = x - b (Eq. 30). Given
+// the half width a, offset b and G of Eq. (33), the pseudo-pressure is (Eq. 32)
+//   p*(xi) = C1 / (2 pi) [sqrt(a^2 - xi^2) + ((V tau - b) xi + G) / sqrt(a^2 - xi^2)]
+// and the pressure solves the first-order equation (7), c [(1 + f) p - V tau p'] = p*, with
+// p = 0 at the leading edge (Eq. 35):
+//   c p(x) = 1/(V tau) int_x^{b+a} p*(x') exp(-k (x' - x)) dx',   k = (1 + f) / (V tau).
+// When G satisfies the trailing-edge condition (36) the same integral taken from the trailing
+// edge (docs/theory.md, "Stable evaluation of Eq. (35)") is equal to it; each form is used where
+// it neither overflows nor cancels. Only exponentials of non-positive arguments (or at most +1)
+// are formed, so nothing overflows for any V tau.
+#pragma once
+
+#include <algorithm>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cstdint>
+#include <cmath>
+#include <limits>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+
+namespace viscoroll {
+
+/// Location and value of the largest pressure on a strip.
+template <RealScalar Real>
+struct PressurePeak {
+  Real x;         ///< where the peak sits (moving frame)
+  Real pressure;  ///< its value
+};
+
+/// Pressure on one strip of the contact, Eqs. (32) and (35).
+///
+/// Quadrature is a QuadratureRule policy applied on panels on which the exponential weight of
+/// Eq. (35) falls by at most e^8; with GaussLegendre<Real, 24> each panel is exact to about 1e-39
+/// relative (docs/theory.md), so the reconstruction is limited by rounding, not by the rule.
+template <RealScalar Real, class Quadrature>
+  requires QuadratureRule<Quadrature, Real>
+class StripPressure {
+ public:
+  /// c1: curvature C1; a, b, g: half width, offset and G(y) of the strip; vtau: V tau >= 0;
+  /// f: creep ratio; compliance: (1 - nu) / (2 pi mu_D). vtau == 0 is the static strip.
+  StripPressure(Real c1, Real a, Real b, Real g, Real vtau, Real f, Real compliance)
+      : c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance) {}
+
+  Real half_width() const { return a_; }
+  Real offset() const { return b_; }
+  Real leading_edge() const { return b_ + a_; }
+  Real trailing_edge() const { return b_ - a_; }
+
+  /// Eq. (32): the pseudo-pressure p*(x); zero outside the strip.
+  Real pseudo_pressure(Real x) const {
+    using std::sqrt;
+    const Real ahead = leading_edge() - x, behind = x - trailing_edge();
+    if (!(ahead > 0 && behind > 0)) return Real(0);
+    const Real root = sqrt(ahead * behind);  // sqrt(a^2 - xi^2) without cancellation
+    const Real xi = x - b_;
+    return c1_ / (2 * pi()) * (root + ((vtau_ - b_) * xi + g_) / root);
+  }
+
+  /// Eq. (35): the contact pressure p(x); zero outside the strip.
+  Real pressure(Real x) const {
+    const Real ahead = leading_edge() - x, behind = x - trailing_edge();
+    if (!(ahead > 0 && behind > 0)) return Real(0);
+    if (vtau_ == 0) return pseudo_pressure(x) / (c_ * (1 + f_));  // Eq. (7) with V tau = 0
+    const Real alpha = (1 + f_) * a_ / vtau_;                     // Eq. (37)
+    const Real prefactor = c1_ / (2 * pi() * c_ * vtau_);
+    const Real one_minus_s = ahead / a_, one_plus_s = behind / a_;
+    if (one_plus_s < 1 && alpha * one_plus_s <= 1)
+      return -prefactor * from_trailing_edge(alpha, one_plus_s);
+    if (alpha * one_minus_s <= cutoff()) return prefactor * near_leading_edge(alpha, one_minus_s);
+    return prefactor * interior(x, ahead, behind);
+  }
+
+  /// dp/dx from Eq. (7): c V tau p' = c (1 + f) p - p*; needs V tau > 0.
+  Real pressure_slope(Real x) const {
+    return ((1 + f_) * pressure(x) - pseudo_pressure(x) / c_) / vtau_;
+  }
+
+  /// The largest pressure on the strip and where it sits.
+  PressurePeak<Real> peak() const { return peak_between(trailing_edge(), leading_edge()); }
+
+  /// The largest pressure on [lo, hi] (clipped to the strip) and where it sits. The location is
+  /// the root of the slope (7) to about epsilon when V tau > 0, else Brent's estimate (about
+  /// sqrt(epsilon) of the width); the value is accurate to about epsilon either way.
+  PressurePeak<Real> peak_between(Real lo, Real hi) const {
+    using std::cos;
+    lo = std::max(lo, trailing_edge());
+    hi = std::min(hi, leading_edge());
+    // Samples clustered at both ends (cosine spacing) and, when there is one, through the
+    // leading-edge layer of width V tau / (1 + f) where the low-speed peak sits (Fig. 6).
+    std::vector<Real> xs;
+    const int n = 96;
+    const Real mid = (lo + hi) / 2, half = (hi - lo) / 2;
+    for (int i = 0; i <= n; ++i) xs.push_back(mid - half * cos(pi() * Real(i) / Real(n)));
+    const Real layer = vtau_ / (1 + f_);
+    if (vtau_ > 0 && layer < a_)
+      for (Real m = Real(1) / 128; m <= 64; m *= 2)
+        if (leading_edge() - m * layer > lo && leading_edge() - m * layer < hi) xs.push_back(leading_edge() - m * layer);
+    std::sort(xs.begin(), xs.end());
+    std::size_t best = 0;
+    Real best_p = pressure(xs[0]);
+    for (std::size_t i = 1; i < xs.size(); ++i) {
+      const Real p = pressure(xs[i]);
+      if (p > best_p) best_p = p, best = i;
+    }
+    if (best == 0 || best + 1 == xs.size()) return {xs[best], best_p};  // at an end of [lo, hi]
+    const Real left = xs[best - 1], right = xs[best + 1];
+    if (vtau_ > 0) {
+      const Real s_left = pressure_slope(left), s_right = pressure_slope(right);
+      if (s_left > 0 && s_right < 0) {
+        std::uintmax_t iterations = 200;
+        const auto root = boost::math::tools::toms748_solve(
+            [this](Real x) { return pressure_slope(x); }, left, right, s_left, s_right,
+            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3), iterations);
+        const Real x = (root.first + root.second) / 2, p = pressure(x);
+        if (p >= best_p) return {x, p};
+      }
+    }
+    const auto found = boost::math::tools::brent_find_minima(
+        [this](Real x) { return -pressure(x); }, left, right, std::numeric_limits<Real>::digits / 2);
+    if (-found.second >= best_p) return {found.first, -found.second};
+    return {xs[best], best_p};
+  }
+
+ private:
+  static Real pi() { return boost::math::constants::pi<Real>(); }
+  /// Exponents beyond which exp(-u) is below epsilon / 100: the integrand is dropped there.
+  static Real cutoff() {
+    using std::log;
+    return -log(std::numeric_limits<Real>::epsilon()) + Real(5);
+  }
+  /// Panel ends in the exponent u: 0, 1, 3, 7, 15, then steps of 8 up to u_max.
+  template <class Body>
+  static Real over_panels(Real u_max, Body body) {
+    Real sum = 0, lo = 0, width = 1;
+    while (lo < u_max) {
+      const Real hi = std::min<Real>(lo + width, u_max);
+      sum += body(lo, hi);
+      lo = hi;
+      width = std::min<Real>(2 * width, Real(8));
+    }
+    return sum;
+  }
+
+  // phi(t) = (a^2 - t^2) + (V tau - b) t + G, the numerator of Eq. (32) over C1/(2 pi).
+  Real phi_from_cos(Real cos_theta, Real sin_theta) const {
+    return a_ * a_ * sin_theta * sin_theta + (vtau_ - b_) * a_ * cos_theta + g_;
+  }
+
+  /// Eq. (35) with t = a cos(theta), 0 <= theta <= theta_s: the whole remaining strip lies within
+  /// the exponential's reach (alpha (1 - s) <= cutoff). Returns the integral over theta of
+  /// phi(a cos theta) exp(-alpha (cos theta - s)).
+  Real near_leading_edge(Real alpha, Real one_minus_s) const {
+    using std::asin;
+    using std::cos;
+    using std::exp;
+    using std::sin;
+    using std::sqrt;
+    const Real theta_s = 2 * asin(sqrt(one_minus_s / 2));
+    // theta(u) solves alpha (cos theta - s) = u: cos theta = 1 - (1 - s - u / alpha).
+    const Real u_max = alpha * one_minus_s;
+    // The last panel ends at theta = 0 exactly: 1 - s - u_max/alpha is a rounding residual whose
+    // square root (~1e-10 in double) would cut off a sliver of the integral.
+    auto theta_of = [&](Real u) {
+      const Real gap = one_minus_s - u / alpha;
+      return u >= u_max || gap <= 0 ? Real(0) : 2 * asin(sqrt(gap / 2));
+    };
+    auto integrand = [&](Real theta) {
+      // cos theta - s = 2 sin((theta_s + theta)/2) sin((theta_s - theta)/2), without cancellation
+      const Real u = 2 * alpha * sin((theta_s + theta) / 2) * sin((theta_s - theta) / 2);
+      return phi_from_cos(cos(theta), sin(theta)) * exp(-u);
+    };
+    return over_panels(u_max, [&](Real u_lo, Real u_hi) {
+      return Quadrature::integrate(integrand, theta_of(u_hi), theta_of(u_lo));
+    });
+  }
+
+  /// Eq. (35) in sigma = x' - x for an interior point, k (b + a - x) > cutoff: the exponential
+  /// confines the integrand to sigma < cutoff / k, far from the leading edge.
+  Real interior(Real x, Real ahead, Real behind) const {
+    using std::exp;
+    using std::sqrt;
+    const Real k = (1 + f_) / vtau_;
+    const Real xi = x - b_;
+    auto integrand = [&](Real sigma) {
+      const Real ahead_t = ahead - sigma, behind_t = behind + sigma;  // a - t, a + t
+      const Real t = xi + sigma;
+      return (ahead_t * behind_t + (vtau_ - b_) * t + g_) / sqrt(ahead_t * behind_t) *
+             exp(-k * sigma);
+    };
+    return over_panels(cutoff(), [&](Real u_lo, Real u_hi) {
+      return Quadrature::integrate(integrand, u_lo / k, u_hi / k);
+    });
+  }
+
+  /// Eq. (35) taken from the trailing edge, valid because G satisfies Eq. (36):
+  /// int_{-a}^{xi} p* exp(k (xi - t)) dt, with t = -a cos(psi), 0 <= psi <= psi_s. The exponent
+  /// alpha (cos psi - cos psi_s) lies in [0, alpha (1 + s)] <= 1.
+  Real from_trailing_edge(Real alpha, Real one_plus_s) const {
+    using std::asin;
+    using std::cos;
+    using std::exp;
+    using std::sin;
+    using std::sqrt;
+    const Real psi_s = 2 * asin(sqrt(one_plus_s / 2));
+    auto integrand = [&](Real psi) {
+      const Real u = 2 * alpha * sin((psi_s + psi) / 2) * sin((psi_s - psi) / 2);
+      return phi_from_cos(-cos(psi), sin(psi)) * exp(u);
+    };
+    return Quadrature::integrate(integrand, Real(0), psi_s);
+  }
+
+  Real c1_, a_, b_, g_, vtau_, f_, c_;
+};
+
+}  // namespace viscoroll

@@ -1,0 +1,170 @@
+// viscoroll: the plane problem, a rigid cylinder rolling on a standard-linear-solid half space.
+//
+// Hunter (1961), J. Appl. Mech. 28, 611-617; in the notation of Panek & Kalker (1980), to whose
+// equations the plane problem reduces when nothing varies along y. The contact [b - a, b + a]
+// carries the pseudo-pressure (32); the trailing-edge condition (36), the load (33) with (52),
+// and contact at the leading edge, G K0(a / V tau) = a b K1(a / V tau) (the plane analogue of
+// (38)-(44), derived in docs/theory.md, "The plane problem"), fix a, b and G. Eliminating b and G
+// leaves one equation for A = a / a0, a0 the long-term Hertz half width (docs/theory.md, (P5)):
+//   A^2 + 2 f/(1+f) (V tau / a0) A R = 1,   R = r_I r_K / (r_I + r_K),
+//   r_I = I1(alpha)/I0(alpha), alpha = (1+f) a/(V tau);  r_K = K1(beta)/K0(beta), beta = a/(V tau).
+#pragma once
+
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <concepts>
+#include <cstdint>
+#include <limits>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/validate.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+#include <viscoroll/quadrature/gauss_legendre.hpp>
+#include <viscoroll/special/bessel_ratio.hpp>
+
+namespace viscoroll {
+
+/// A rigid cylinder of curvature c1 = 1/R pressed with load per unit length `load` and rolling
+/// towards +x at `speed`.
+template <RealScalar Real>
+struct PlaneScene {
+  Real c1;
+  Real load;
+  Real speed;
+
+  /// Throws std::invalid_argument naming the parameter unless c1 > 0, load > 0, speed >= 0.
+  void validate() const {
+    detail::require_positive("c1", c1);
+    detail::require_positive("load", load);
+    detail::require_non_negative("speed", speed);
+  }
+};
+
+/// Runtime settings of the plane solver.
+struct PlaneOptions {
+  /// Iterations allowed to the root finder for a (TOMS 748); each costs four Bessel ratios.
+  int max_iterations = 100;
+
+  void validate() const {
+    detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations", max_iterations,
+                    "1 <= max_iterations <= 100000");
+  }
+};
+
+/// The plane solution: the contact, the pressure and the rolling friction.
+template <RealScalar Real, class Quadrature>
+struct PlaneSolution {
+  Real a;            ///< contact half width
+  Real b;            ///< offset of the contact centre ahead of the cylinder axis (Eq. 29)
+  Real g;            ///< G of Eqs. (33), (36)
+  Real a_long_term;  ///< a0: the V tau -> 0 (long-term Hertz) half width, 4 c (1+f) W / C1 = a0^2
+  Real f0;           ///< F0 = int p* dx = c (1 + f) W (Eq. 52)
+  Real q;            ///< Q of Eq. (46)
+  Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51)
+  bool converged;    ///< the root for a met the tolerance within the allowed iterations
+  int iterations;    ///< root-finder iterations (0 for a static scene)
+  Real residual;     ///< |A^2 + 2 f/(1+f) (V tau/a0) A R - 1| at the returned a
+  StripPressure<Real, Quadrature> strip;
+
+  /// Eq. (35): the pressure at x (moving frame; the cylinder axis is x = 0).
+  Real pressure(Real x) const { return strip.pressure(x); }
+  /// Eq. (32): the pseudo-pressure at x.
+  Real pseudo_pressure(Real x) const { return strip.pseudo_pressure(x); }
+  /// The pressure peak and its location.
+  PressurePeak<Real> peak() const { return strip.peak(); }
+};
+
+/// Solver of the plane problem over a scalar, a constitutive model and a quadrature rule (the
+/// rule serves the pressure reconstruction (35); a, b, G and chi are closed-form given a).
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 24>>
+  requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
+class PlaneSolver {
+ public:
+  using Solution = PlaneSolution<Real, Quadrature>;
+
+  explicit PlaneSolver(Material material, PlaneOptions options = {})
+      : material_(std::move(material)), options_(options) {
+    options_.validate();
+  }
+
+  const Material& material() const { return material_; }
+
+  /// Solves the scene; throws std::invalid_argument for an invalid scene.
+  Solution solve(const PlaneScene<Real>& scene) const {
+    using std::sqrt;
+    scene.validate();
+    const Real c = material_.instantaneous_compliance();
+    const Real f = material_.creep_ratio();
+    const Real vtau = scene.speed * material_.relaxation_time();
+    // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
+    const Real a0 = sqrt(4 * c * (1 + f) * scene.load / scene.c1);
+    if constexpr (Material::is_viscoelastic) {
+      if (vtau > 0 && f > 0) return rolling(scene, c, f, vtau, a0);
+    }
+    // Static or elastic: Hertz with the long-term compliance, no Bessel work.
+    return Solution{a0, Real(0), Real(0), a0, scene.c1 * a0 * a0 / 4, Real(0), Real(0), true, 0,
+                    Real(0), StripPressure<Real, Quadrature>(scene.c1, a0, Real(0), Real(0), Real(0), f, c)};
+  }
+
+ private:
+  Solution rolling(const PlaneScene<Real>& scene, Real c, Real f, Real vtau, Real a0) const {
+    using special::bessel_i1_over_i0;
+    using special::bessel_i2_over_i0;
+    using special::bessel_k1_over_k0;
+    const Real v = vtau / a0;
+    const Real creep = f / (1 + f);
+    // (P5): h(A) = A^2 + 2 f/(1+f) v A R(A) - 1, increasing from h < 0 at the glassy width
+    // A = (1+f)^(-1/2) to h > 0 at the long-term width A = 1.
+    auto h = [&](Real A) {
+      const Real r_i = bessel_i1_over_i0((1 + f) * A / v);
+      const Real r_k = bessel_k1_over_k0(A / v);
+      return A * A + 2 * creep * v * A * (r_i * r_k / (r_i + r_k)) - 1;
+    };
+    using std::sqrt;
+    Real lo = 1 / sqrt(1 + f), hi = Real(1);
+    const Real h_lo = h(lo), h_hi = h(hi);
+    Real A;
+    bool converged = true;
+    int iterations = 0;
+    if (h_lo >= 0) {
+      A = lo;  // the glassy limit to rounding
+    } else if (h_hi <= 0) {
+      A = hi;  // the long-term limit to rounding
+    } else {
+      std::uintmax_t max_iter = static_cast<std::uintmax_t>(options_.max_iterations);
+      const auto bracket = boost::math::tools::toms748_solve(
+          h, lo, hi, h_lo, h_hi,
+          boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2), max_iter);
+      iterations = static_cast<int>(max_iter);
+      A = (bracket.first + bracket.second) / 2;
+      using std::abs;
+      converged = abs(bracket.second - bracket.first) <=
+                  8 * std::numeric_limits<Real>::epsilon() * abs(A);
+    }
+    using std::abs;
+    const Real residual = abs(h(A));
+    const Real a = A * a0;
+    const Real alpha = (1 + f) * a / vtau;  // Eq. (37)
+    const Real r_i = bessel_i1_over_i0(alpha);
+    const Real r_k = bessel_k1_over_k0(a / vtau);
+    // (P4): b from (36) = leading-edge condition; then G = a b K1/K0.
+    const Real b = vtau * creep * r_i / (r_i + r_k);
+    const Real g = a * b * r_k;
+    const Real f0 = scene.c1 * a0 * a0 / 4;                       // Eq. (33) with (52)
+    const Real q = (1 - b / vtau) * scene.c1 * g / 2;              // Eq. (46)
+    // (P7): chi = C1 xbar, xbar = [2 b G + V tau (f a^2 I2/I0 + 2 a b r_I) / (1+f)] / a0^2,
+    // every term non-negative (the paper's (54) cancels as V tau grows).
+    const Real delta = bessel_i2_over_i0(alpha);
+    const Real xbar = (2 * b * g + vtau * (f * a * a * delta + 2 * a * b * r_i) / (1 + f)) / (a0 * a0);
+    return Solution{a, b, g, a0, f0, q, scene.c1 * xbar, converged, iterations, residual,
+                    StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
+  }
+
+  Material material_;
+  PlaneOptions options_;
+};
+
+/// The common case: double precision, standard linear solid, 24-point Gauss-Legendre panels.
+using PlaneSolverD = PlaneSolver<double, StandardLinearSolid<double>>;
+
+}  // namespace viscoroll
