@@ -7,6 +7,7 @@
 #include <limits>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
+#include <viscoroll/quadrature/adaptive.hpp>
 
 namespace {
 
@@ -184,4 +185,25 @@ TEST_CASE("plane: the scene is validated", "[plane][validation]") {
   CHECK_THROWS_WITH(solver.solve({1.0, 1.0, std::nan("")}), Catch::Contains("speed"));
   CHECK_THROWS_AS(viscoroll::PlaneSolverD(StandardLinearSolid<double>(1, 0.3, 9, 1), viscoroll::PlaneOptions{0}),
                   std::invalid_argument);
+}
+
+TEST_CASE("plane: the quadrature policy only changes rounding", "[plane][quadrature]") {
+  // The reconstruction (35) is exact to rounding with the default 24-point rule on its panels
+  // (docs/theory.md section 2); a 16-point rule and the adaptive Gauss-Kronrod rule (tolerance
+  // eps^(2/3) on |K - G|, error ~ eps for these smooth panel integrands) give the same pressure.
+  using SLS = StandardLinearSolid<double>;
+  for (double vtau : {0.01, 1.0, 100.0}) {
+    const Scene<double> sc{9.0, vtau};
+    const auto fixed = PlaneSolver<double, SLS>(sc.material()).solve(sc.scene());
+    const auto g16 = PlaneSolver<double, SLS, viscoroll::GaussLegendre<double, 16>>(sc.material()).solve(sc.scene());
+    const auto adaptive =
+        PlaneSolver<double, SLS, viscoroll::AdaptiveGaussKronrod<double>>(sc.material()).solve(sc.scene());
+    const double scale = sc.scene().load / fixed.a;
+    for (double s : {-0.999, -0.5, 0.0, 0.7, 0.999}) {
+      const double x = fixed.b + s * fixed.a;
+      INFO("V tau = " << vtau << ", s = " << s);
+      CHECK(std::abs(g16.pressure(x) - fixed.pressure(x)) <= 256 * eps<double>() * scale);
+      CHECK(std::abs(adaptive.pressure(x) - fixed.pressure(x)) <= 256 * eps<double>() * scale);
+    }
+  }
 }
