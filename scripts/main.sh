@@ -26,6 +26,10 @@ if [ -x "$plane" ]; then
   mkdir -p out
   echo "==> [main] $plane out/plane"
   "$plane" out/plane
+  if command -v gnuplot >/dev/null 2>&1; then
+    echo "==> [main] gnuplot scripts/plot_plane.gp (PNG in out/plane)"
+    gnuplot -e "dir='out/plane'; outdir='out/plane'" scripts/plot_plane.gp
+  fi
 else
   echo "==> [main] $plane not built; skipping the figure data"
 fi
