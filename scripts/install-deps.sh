@@ -9,6 +9,7 @@ packages=(
   catch2 libbenchmark-dev      # tests, benchmarks
   gnuplot-nox                  # figures
   libfftw3-dev                 # optional FFT back end
+  clang libclang-rt-14-dev     # libFuzzer target (scripts/fuzz.sh)
 )
 
 missing=()

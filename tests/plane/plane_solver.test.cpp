@@ -207,3 +207,28 @@ TEST_CASE("plane: the quadrature policy only changes rounding", "[plane][quadrat
     }
   }
 }
+
+TEMPLATE_TEST_CASE("plane: extreme speeds and creep ratios", "[plane][stiff]", float, double, long double) {
+  using Real = TestType;
+  // Issue 2: nothing overflows or loses digits for V tau/a0 from 1e-4 to 1e4, here with f up to
+  // 1e4 (alpha = (1+f) a/(V tau) up to 1e8). The load is met to the moment quadrature's
+  // tolerance plus the rounding of p; p >= 0 to rounding.
+  const Real tol = std::max(Real(1e-12), 64 * eps<Real>());
+  for (Real f : {Real(0), Real(1), Real(1e4)})
+    for (Real vtau : {Real(1e-4), Real(1e4)}) {
+      const Scene<Real> sc{f, vtau};
+      const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(sc.material()).solve(sc.scene());
+      INFO("f = " << f << ", V tau/a0 = " << vtau << ", a = " << s.a << ", b = " << s.b << ", chi = " << s.chi);
+      REQUIRE(s.converged);
+      CHECK(std::isfinite(static_cast<double>(s.chi)));
+      CHECK(s.a <= 1 + 4 * eps<Real>());
+      CHECK(s.a >= 1 / std::sqrt(1 + f) * (1 - 4 * eps<Real>()));
+      CHECK(s.b >= 0);
+      CHECK(s.chi >= 0);
+      const Real W = sc.scene().load;
+      const auto peak = s.peak();
+      CHECK(std::isfinite(static_cast<double>(peak.pressure)));
+      CHECK(peak.pressure > 0);
+      CHECK(std::abs(moment(s, 0, tol) - W) <= (tol + 4096 * eps<Real>()) * W);
+    }
+}
