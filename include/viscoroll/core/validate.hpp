@@ -51,4 +51,10 @@ void require_non_negative(std::string_view name, const Real& value) {
   require((boost::math::isfinite)(value) && value >= 0, name, value, range);
 }
 
+/// -1 < nu <= 0.5 and finite: the range of Poisson's ratio for a stable isotropic solid.
+template <class Real>
+void require_poisson_ratio(const Real& nu) {
+  require((boost::math::isfinite)(nu) && nu > -1 && nu <= Real(1) / 2, "nu", nu, "-1 < nu <= 0.5");
+}
+
 }  // namespace viscoroll::detail

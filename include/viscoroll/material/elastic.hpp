@@ -18,8 +18,7 @@ class Elastic {
   /// Throws std::invalid_argument unless mu > 0 and -1 < nu <= 0.5, both finite.
   Elastic(Real mu, Real nu) : mu_(mu), nu_(nu) {
     detail::require_positive("mu", mu);
-    detail::require((boost::math::isfinite)(nu) && nu > -1 && nu <= Real(0.5), "nu", nu,
-                    "-1 < nu <= 0.5");
+    detail::require_poisson_ratio(nu);
   }
 
   Real mu_d() const { return mu_; }
