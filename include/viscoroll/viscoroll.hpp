@@ -11,6 +11,7 @@
 #include <viscoroll/core/strip_pressure.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
+#include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/adaptive.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>

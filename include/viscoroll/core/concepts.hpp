@@ -52,4 +52,14 @@ concept QuadratureRule = RealScalar<Real> && requires(Real a, Real b) {
   { Q::integrate([](Real x) { return x; }, a, b) } -> std::convertible_to<Real>;
 };
 
+
+/// A fixed quadrature rule that exposes its nodes and weights on [-1, 1] (GaussLegendre<Real, N>),
+/// for solvers that evaluate several kernels on one set of nodes.
+template <class Q, class Real>
+concept NodalQuadratureRule = QuadratureRule<Q, Real> && requires {
+  { Q::nodes()[0] } -> std::convertible_to<Real>;
+  { Q::weights()[0] } -> std::convertible_to<Real>;
+  { Q::points } -> std::convertible_to<int>;
+};
+
 }  // namespace viscoroll

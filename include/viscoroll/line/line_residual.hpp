@@ -1,0 +1,276 @@
+// viscoroll: the residual assembly of the line solver.
+//
+// Panek & Kalker (1980), Sections 5 and 7. The unknowns are the coefficients of a(y) and b(y)
+// (line_shape.hpp), ln l and d; the equations, at collocation points y_i = l t_i, are
+//   (34)  FP[F0](y) + F0(y) ln[16 (l^2 - y^2)/a^2] + C1 a^2/4 + (C1/2) b (b - 2 V) + C2 y^2/2 - d = 0
+//   (LE)  the leading-edge condition, in the form (L6) of docs/theory.md section 4 (default) or as
+//         the paper's (44) (LeadingEdgeForm::paper, for comparison only: its small-argument step is
+//         exponentially amplified when V tau << a, docs/theory.md section 4)
+//   (47)  int F0 dy = C1 a0^2 l0 / 3 = (1 + f) c P
+// with G (36), F0 (33), Q (46) pointwise, V = V tau. (L6) reads
+//   C1 {a b e^z K1(z) - G e^z K0(z)} = (Lambda - I_x0)[Q](y) - V int_0^inf e^-t d/dx I[Q, x0 + V t](y) dt,
+// z = a/V, x0 = a + b, Lambda the near-field operator (24), I the extended operator (41). Both
+// integral terms are sums over one set of nodes y' = y +- s per collocation point:
+//   (Lambda - I_x)[Q] = int (Q(y') - Q(y)) x^2 / (s h (s + h)) dy'
+//                       - Q(y) sum_{d = l -+ y} log1p(x^2 / (2 d (h_d + d))),       h = sqrt(x^2 + s^2),
+//   V int e^-t dI/dx dt = int (Q(y') - Q(y)) K(s) dy' + Q(y) V int e^-t x_t sum_d 1/(h_d (h_d + d)) dt,
+//   K(s) = -V int_0^inf e^-t x_t (x_t^2 + s^2)^(-3/2) dt,  x_t = x0 + V t,
+// every kernel positive or of one sign, so no term is a difference of large numbers.
+// Nodes in s: panels doubling from x0/2 (the kernels' scale) and halving toward the end of the
+// contact down to the distance of the nearest pole of G (where I0(alpha) = 0, just beyond +-l
+// when a0/V tau is large, docs/line-operators.md); nodes in t: panels doubling from
+// min(x0/V, 1)/2 to -ln(eps) + 8.
+#pragma once
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/line_operators.hpp>
+#include <viscoroll/line/line_shape.hpp>
+#include <viscoroll/special/bessel_ratio.hpp>
+
+namespace viscoroll {
+
+/// Which leading-edge condition closes the line equations.
+enum class LeadingEdgeForm {
+  exterior,  ///< (L6), docs/theory.md section 4: (42) with only I[F1, x0] -> Lambda[F1]
+  paper,     ///< the paper's (44) (with [gamma - ln V tau]), in the form (L2), times e^{x0/V}
+};
+
+/// The scene's constants seen by the residual (V tau > 0, f > 0).
+template <RealScalar Real>
+struct LineProblem {
+  Real c1, c2, vtau, f;
+  Real a_ref;        ///< long-term static half width at y = 0 (scale of a, b)
+  Real l_ref;        ///< long-term static half length (scale of l)
+  Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52)
+};
+
+namespace detail {
+
+/// Composite rule on [0, length]: panels doubling from `first` and halving toward `length` down
+/// to width `finest` (docs/line-operators.md); appends (node, weight) pairs.
+template <class Quadrature, class Real>
+void append_graded_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
+                         Real finest) {
+  if (!(length > 0)) return;
+  const auto& x = Quadrature::nodes();
+  const auto& wt = Quadrature::weights();
+  const auto panel = [&](Real lo, Real hi) {
+    const Real half = (hi - lo) / 2, mid = (lo + hi) / 2;
+    for (int j = 0; j < Quadrature::points; ++j) {
+      s.push_back(mid + half * Real(x[j]));
+      w.push_back(half * Real(wt[j]));
+    }
+  };
+  Real h = std::min(first, length);
+  if (length > finest) h = std::min(h, Real(length / 2));  // the end grading starts at once
+  panel(Real(0), h);
+  while (h < length) {
+    // Double, but never end a panel closer to `length` than the panel is wide (a pole just
+    // beyond the end would sit within a fraction of a half-width of the panel), down to `finest`.
+    Real next = std::min(Real(2 * h), length);
+    if (length - h > finest) next = std::min(next, Real(h + (length - h) / 2));
+    panel(h, next);
+    h = next;
+  }
+}
+
+}  // namespace detail
+
+/// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule.
+template <RealScalar Real, class Quadrature>
+  requires NodalQuadratureRule<Quadrature, Real>
+class LineResidual {
+ public:
+  using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+
+  /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
+  /// balances each block: (34) at N + 1 points and the load (47) fix the N coefficients of a, l and
+  /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b.
+  LineResidual(LineProblem<Real> problem, int terms, LeadingEdgeForm form = LeadingEdgeForm::exterior)
+      : p_(problem), n_(terms), form_(form) {
+    detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
+    using std::cos;
+    using std::sqrt;
+    const Real pi = boost::math::constants::pi<Real>();
+    const int m = points();
+    for (int i = 1; i <= m; ++i) {
+      // Chebyshev points in u = 2 t^2 - 1, t = sqrt((1 + u)/2) in (0, 1).
+      const Real u = cos(pi * Real(2 * i - 1) / Real(2 * m));
+      t_.push_back(sqrt((1 + u) / 2));
+    }
+    using std::log;
+    t_max_ = -log(std::numeric_limits<Real>::epsilon()) + 8;
+  }
+
+  int terms() const { return n_; }
+  int points() const { return n_ + 1; }
+  /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, ln(l / l_ref), d / (C1 a_ref^2).
+  int unknowns() const { return 2 * n_ + 3; }
+  /// Equations: (34) and the leading-edge condition at each point, then the load (47).
+  int equations() const { return 2 * points() + 1; }
+  const std::vector<Real>& collocation() const { return t_; }
+  const LineProblem<Real>& problem() const { return p_; }
+
+  LineShape<Real> shape(const Vector& x) const {
+    using std::exp;
+    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}};
+    for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
+    for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
+    return s;
+  }
+  Real penetration(const Vector& x) const { return x[2 * n_ + 2] * p_.c1 * p_.a_ref * p_.a_ref; }
+
+  /// The unknowns of a shape and penetration.
+  Vector pack(const LineShape<Real>& s, Real d) const {
+    using std::log;
+    Vector x = Vector::Zero(unknowns());
+    for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
+    for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
+    x[2 * n_ + 1] = log(s.l / p_.l_ref);
+    x[2 * n_ + 2] = d / (p_.c1 * p_.a_ref * p_.a_ref);
+    return x;
+  }
+
+  /// Residual r(x), scaled: (34) by C1 a_ref^2 (plus V/a_ref times the leading-edge row, below),
+  /// the leading-edge condition by its derivative with respect to b (so that it reads as an error
+  /// in b / a_ref), the load by its target. Returns false
+  /// (and leaves r unspecified) where the equations are undefined: a leading edge x0 = a + b <= 0
+  /// or a non-finite value.
+  bool operator()(const Vector& x, Vector& r) const {
+    r.resize(equations());
+    const LineShape<Real> s = shape(x);
+    const Real d = penetration(x);
+    const int m = points();
+    for (int i = 0; i < m; ++i) {
+      Real r34, rle;
+      if (!at_point(s, d, t_[i] * s.l, r34, rle)) return false;
+      // (34) depends on b through C1 V b, the leading-edge condition through its slope C1 V (as
+      // V tau >> a): adding V/a_ref times the latter (scaled to an error in b/a_ref) cancels the b
+      // dependence of (34) to first order, so that (34) speaks for a, l and d at every speed. A row
+      // operation: the solution is unchanged, the Jacobian's condition number no longer grows as V.
+      r[i] = r34 + p_.vtau / p_.a_ref * rle;
+      r[m + i] = rle;
+    }
+    r[2 * m] = load(s) / p_.load_target - 1;
+    for (int i = 0; i < r.size(); ++i)
+      if (!(boost::math::isfinite)(r[i])) return false;
+    return true;
+  }
+
+  /// int_{-l}^{l} F0 dy (Eq. 47).
+  Real load(const LineShape<Real>& s) const {
+    std::vector<Real> nodes, weights;
+    detail::append_graded_nodes<Quadrature>(nodes, weights, s.l, s.l / 2, end_width(s, s.l));
+    Real sum = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
+    return 2 * sum;
+  }
+
+  /// (34) and the leading-edge residual at one y, |y| < l (scaled as in operator()).
+  bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle) const {
+    using std::log;
+    using std::log1p;
+    using std::hypot;
+    using std::sqrt;
+    using std::exp;
+    const Real c1 = p_.c1, v = p_.vtau;
+    const auto here = strip_functions(c1, s.a(y), s.b(y), v, p_.f);
+    const Real a = here.a, b = here.b, x0 = a + b;
+    if (!(a > 0) || !(x0 > 0)) return false;
+    const Real d1 = s.l - y, d2 = s.l + y;
+
+    // Nodes in t for the eta-integral of (L6), weights including e^-t.
+    std::vector<Real> tn, tw;
+    const Real c = std::min(Real(x0 / v), Real(1));
+    detail::append_graded_nodes<Quadrature>(tn, tw, t_max_, c / 2, t_max_);
+    std::vector<Real> xk(tn.size()), wk(tn.size());
+    for (std::size_t k = 0; k < tn.size(); ++k) {
+      xk[k] = x0 + v * tn[k];
+      wk[k] = v * tw[k] * exp(-tn[k]);
+    }
+
+    // Nodes in s on both sides, shared by every kernel.
+    Real fp = 0, s1 = 0, s2 = 0;
+    const bool exterior = form_ == LeadingEdgeForm::exterior;
+    for (int side = 0; side < 2; ++side) {
+      const Real len = side == 0 ? d1 : d2;
+      std::vector<Real> sn, sw;
+      detail::append_graded_nodes<Quadrature>(sn, sw, len, x0 / 2, end_width(s, len));
+      for (std::size_t j = 0; j < sn.size(); ++j) {
+        const Real yp = side == 0 ? Real(y + sn[j]) : Real(y - sn[j]);
+        const Real dist = side == 0 ? Real(yp - y) : Real(y - yp);  // recomputed: rounding of yp
+        if (!(dist > 0)) continue;
+        const auto there = strip_functions(c1, s.a(yp), s.b(yp), v, p_.f);
+        fp += sw[j] * (there.f0 - here.f0) / dist;
+        if (!exterior) continue;
+        const Real dq = there.q - here.q;
+        const Real h = hypot(x0, dist);
+        s1 += sw[j] * dq * (x0 * x0 / (dist * h * (dist + h)));
+        Real kern = 0;
+        for (std::size_t k = 0; k < xk.size(); ++k) {
+          const Real hk = hypot(xk[k], dist);
+          kern += wk[k] * xk[k] / (hk * hk * hk);
+        }
+        s2 -= sw[j] * dq * kern;
+      }
+    }
+
+    // (34), scaled by C1 a_ref^2.
+    const Real lhs34 = fp + here.f0 * (log(4 * d1 / a) + log(4 * d2 / a));
+    const Real rhs34 = -c1 * a * a / 4 - c1 * b * (b - 2 * v) / 2 - p_.c2 * y * y / 2 + d;
+    r34 = (lhs34 - rhs34) / (c1 * p_.a_ref * p_.a_ref);
+
+    // Leading-edge condition.
+    const Real z = a / v;
+    const Real k0 = special::bessel_k0_scaled(z), k1 = special::bessel_k1_scaled(z);
+    const Real bessel = c1 * (a * b * k1 - here.g * k0);  // C1 e^z {a b K1 - G K0}, Eq. (42)
+    Real right;
+    if (exterior) {
+      const Real h1 = hypot(x0, d1), h2 = hypot(x0, d2);
+      const Real ends_l = -(log1p(x0 * x0 / (2 * d1 * (h1 + d1))) + log1p(x0 * x0 / (2 * d2 * (h2 + d2))));
+      Real ends_2 = 0;
+      for (std::size_t k = 0; k < xk.size(); ++k) {
+        const Real g1 = hypot(xk[k], d1), g2 = hypot(xk[k], d2);
+        ends_2 += wk[k] * xk[k] * (1 / (g1 * (g1 + d1)) + 1 / (g2 * (g2 + d2)));
+      }
+      // (L6): (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt
+      right = (s1 + here.q * ends_l) - (s2 + here.q * ends_2);
+    } else {
+      // (44) in the form (L2), multiplied by e^{(a + b)/V} to the scaling of (42).
+      LineOperators<Real, Quadrature> ops(s.l);
+      const auto q = [&](Real yp) { return strip_functions(c1, s.a(yp), s.b(yp), v, p_.f).q; };
+      right = exp(x0 / v) * ops.leading_edge_kernel(q, v, y);
+    }
+    const Real r_i = special::bessel_i1_over_i0(Real((1 + p_.f) * a / v));
+    const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
+    rle = (bessel - right) / (slope * p_.a_ref);
+    return true;
+  }
+
+ private:
+  /// Finest panel toward the end of a side of length len: the distance of the nearest pole of G
+  /// beyond y = +-l, where (1 + f) a(y) / V tau = +- i j_{0,1} (a^2 < 0 just past the end).
+  Real end_width(const LineShape<Real>& s, Real len) const {
+    using std::exp;
+    const Real j01 = Real(2.404825557695772768621631879326454643124L);
+    const Real a_end = s.a_ref * exp(LineShape<Real>::chebyshev(s.alpha, Real(1)));
+    const Real cc = j01 * p_.vtau / ((1 + p_.f) * a_end);
+    const Real beyond = s.l * cc * cc / 2;  // 1 - t^2 = -cc^2 at t = 1 + cc^2/2
+    return std::max(Real(beyond / 4), Real(len * std::numeric_limits<Real>::epsilon()));
+  }
+
+  LineProblem<Real> p_;
+  int n_;
+  LeadingEdgeForm form_;
+  std::vector<Real> t_;
+  Real t_max_;
+};
+
+}  // namespace viscoroll

@@ -1,0 +1,72 @@
+// viscoroll: the representation of the contact zone of the line solver.
+//
+// Panek & Kalker (1980), Section 7, leave the parametrisation of a(y) and b(y) open. Ours, with
+// t = y/l and u = 2 t^2 - 1 (both functions are even in y, by the symmetry of the scene):
+//   a(y) = a_ref sqrt(1 - t^2) exp(sum_{k<N} alpha_k T_k(u)),   b(y) = a_ref sum_{k<=N} beta_k T_k(u),
+// T_k the Chebyshev polynomials. a(+-l) = 0 holds by construction, with the square-root end of
+// the static solution (48) (alpha = beta = 0 is Kalker's static contact), and a > 0 inside for
+// any coefficients. G (36), F0 (33) and Q (46) follow pointwise (docs/theory.md section 4).
+#pragma once
+
+#include <cmath>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/special/bessel_ratio.hpp>
+
+namespace viscoroll {
+
+/// a(y), b(y) of the contact and the functions of y that follow from them.
+template <RealScalar Real>
+struct LineShape {
+  Real a_ref;               ///< scale of a and b (the long-term static half width at y = 0)
+  Real l;                   ///< half length
+  std::vector<Real> alpha;  ///< Chebyshev coefficients of ln(a / (a_ref sqrt(1 - t^2)))
+  std::vector<Real> beta;   ///< Chebyshev coefficients of b / a_ref
+
+  /// sum c_k T_k(u) by Clenshaw's recurrence.
+  static Real chebyshev(const std::vector<Real>& c, Real u) {
+    Real b1 = 0, b2 = 0;
+    for (std::size_t k = c.size(); k-- > 1;) {
+      const Real b0 = 2 * u * b1 - b2 + c[k];
+      b2 = b1;
+      b1 = b0;
+    }
+    return c.empty() ? Real(0) : u * b1 - b2 + c[0];
+  }
+
+  /// 1 - t^2 from y without cancellation near the ends: (l - y)(l + y)/l^2.
+  Real one_minus_t2(Real y) const { return ((l - y) / l) * ((l + y) / l); }
+
+  /// a(y) for |y| <= l.
+  Real a(Real y) const {
+    using std::exp;
+    using std::sqrt;
+    const Real w = one_minus_t2(y);
+    if (!(w > 0)) return Real(0);
+    return a_ref * sqrt(w) * exp(chebyshev(alpha, Real(1 - 2 * w)));
+  }
+
+  /// b(y) for |y| <= l.
+  Real b(Real y) const { return a_ref * chebyshev(beta, Real(1 - 2 * one_minus_t2(y))); }
+};
+
+/// The strip functions at one y: G of Eq. (36), F0 of Eq. (33), Q of Eq. (46).
+template <RealScalar Real>
+struct StripFunctions {
+  Real a, b, g, f0, q;
+};
+
+/// G, F0 and Q for half width a, offset b, V tau > 0 and creep ratio f, curvature c1.
+///   G = {(V tau - b) a - a^2/alpha} I1(alpha)/I0(alpha),  alpha = (1 + f) a / V tau   (36), (37)
+///   F0 = C1 (a^2/4 + G/2)                                                            (33)
+///   Q = (C1/2) G (1 - b / V tau)                                                      (46)
+/// with (V tau - b) a - a^2/alpha = a (V tau f/(1 + f) - b).
+template <RealScalar Real>
+StripFunctions<Real> strip_functions(Real c1, Real a, Real b, Real vtau, Real f) {
+  if (!(a > 0)) return {Real(0), b, Real(0), Real(0), Real(0)};
+  const Real alpha = (1 + f) * a / vtau;                                           // Eq. (37)
+  const Real g = a * (vtau * f / (1 + f) - b) * special::bessel_i1_over_i0(alpha);  // Eq. (36)
+  return {a, b, g, c1 * (a * a / 4 + g / 2), c1 * g * (vtau - b) / (2 * vtau)};    // (33), (46)
+}
+
+}  // namespace viscoroll

@@ -1,0 +1,338 @@
+// viscoroll: the paper's 3-D solver, an ellipsoidal roller on a standard linear solid by the
+// line-contact theory.
+//
+// Panek & Kalker (1980), Sections 5-7: the equations (33), (34), (36), (46), (47) and a
+// leading-edge condition (line_residual.hpp; docs/theory.md section 4 for the form (L6) used by
+// default and why the printed (44) is not), solved for the coefficients of a(y), b(y)
+// (line_shape.hpp), l and d by a Levenberg-Marquardt iteration (a damped Gauss-Newton method with
+// Marquardt's diagonal scaling; the system is square, so a converged solution has a zero residual
+// to rounding). The static scene (V tau = 0), the elastic material (f = 0) and the glassy limit
+// (V tau beyond 1/eps half widths) are Kalker's closed form (static_line_contact.hpp) with the
+// long-term or the instantaneous compliance: no Bessel work.
+#pragma once
+
+#include <Eigen/Dense>
+#include <chrono>
+#include <cmath>
+#include <concepts>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/line_residual.hpp>
+#include <viscoroll/line/line_shape.hpp>
+#include <viscoroll/line/static_line_contact.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+#include <viscoroll/plane/plane_solver.hpp>
+#include <viscoroll/quadrature/gauss_legendre.hpp>
+
+namespace viscoroll {
+
+/// An ellipsoidal (doubly parabolic, Eq. 27) roller of curvatures c1 (across) and c2 (along the
+/// axis) under total load `load`, rolling towards +x at `speed`.
+template <RealScalar Real>
+struct LineScene {
+  Real c1;
+  Real c2;
+  Real load;
+  Real speed;
+
+  /// Throws std::invalid_argument naming the parameter unless c1 > 0, 0 < c2 < 8 e^-3 c1 (the
+  /// contact is longer in y than in x), load > 0, speed >= 0, all finite.
+  void validate() const {
+    detail::require_positive("c1", c1);
+    detail::require_positive("c2", c2);
+    detail::require_positive("load", load);
+    detail::require_non_negative("speed", speed);
+    detail::require(c2 < max_line_contact_curvature_ratio<Real>() * c1, "c2", c2,
+                    "0 < c2 < 8 e^-3 c1 = 0.398 c1 (a contact longer in y than in x)");
+  }
+};
+
+/// Runtime settings of the line solver.
+struct LineOptions {
+  /// Discretisation: ln a(y) has `terms` Chebyshev coefficients, b(y) has terms + 1; the
+  /// equations are collocated at terms + 1 points.
+  int terms = 8;
+  /// Levenberg-Marquardt iterations allowed (each costs 2 terms + 4 residual evaluations).
+  int max_iterations = 100;
+  /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
+  LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
+
+  void validate() const {
+    detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
+    detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations",
+                    max_iterations, "1 <= max_iterations <= 100000");
+  }
+};
+
+/// The line-contact solution: the contact zone, the penetration, the line functions of Section 5
+/// and the rolling friction of Section 6.
+template <RealScalar Real, class Quadrature>
+struct LineSolution {
+  LineShape<Real> shape;  ///< a(y), b(y), l
+  Real d;                 ///< penetration (Eq. 27)
+  Real a_long_term;       ///< a0: half width at y = 0 of the static (V tau = 0) contact
+  Real l_long_term;       ///< l0: its half length
+  Real d_long_term;       ///< its penetration
+  Real chi;               ///< rolling-friction coefficient, Eq. (54) in the form of section 4
+  bool converged;         ///< the iteration met its tolerance (always true for a closed form)
+  std::string reason;     ///< why it stopped
+  int iterations;         ///< Levenberg-Marquardt iterations (0 for a closed form)
+  Real residual;          ///< max |r| of the scaled equations at the returned solution
+  std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
+
+  Real c1, vtau, f, compliance;
+
+  Real l() const { return shape.l; }
+  Real a(Real y) const { return shape.a(y); }
+  Real b(Real y) const { return shape.b(y); }
+  /// G(y) of Eq. (36); 0 for a static or elastic scene.
+  Real g(Real y) const { return functions(y).g; }
+  /// F0(y) of Eq. (33).
+  Real f0(Real y) const { return functions(y).f0; }
+  /// Q(y) of Eq. (46).
+  Real q(Real y) const { return functions(y).q; }
+
+  /// The strip at y (|y| < l): Eqs. (32), (35) across the contact.
+  StripPressure<Real, Quadrature> strip(Real y) const {
+    const auto s = functions(y);
+    return StripPressure<Real, Quadrature>(c1, s.a, s.b, s.g, vtau, f, compliance);
+  }
+  /// p(x, y), Eq. (35); zero outside the contact.
+  Real pressure(Real x, Real y) const {
+    using std::abs;
+    if (!(abs(y) < shape.l)) return Real(0);
+    return strip(y).pressure(x);
+  }
+
+  StripFunctions<Real> functions(Real y) const {
+    const Real a = shape.a(y), b = shape.b(y);
+    if (!(vtau > 0) || !(f > 0) || !(a > 0)) return {a, b, Real(0), c1 * a * a / 4, Real(0)};
+    return strip_functions(c1, a, b, vtau, f);
+  }
+};
+
+/// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
+/// quadrature rule (applied on the graded panels of every line integral).
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 12>>
+  requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
+class LineSolver {
+ public:
+  using Solution = LineSolution<Real, Quadrature>;
+  using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+
+  explicit LineSolver(Material material, LineOptions options = {})
+      : material_(std::move(material)), options_(options) {
+    options_.validate();
+  }
+
+  const Material& material() const { return material_; }
+  const LineOptions& options() const { return options_; }
+
+  /// Solves the scene; `start` (a solution of a nearby scene, same material) seeds the iteration.
+  /// Throws std::invalid_argument for an invalid scene; a non-converged iteration is returned
+  /// with converged == false and the reason.
+  Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const {
+    scene.validate();
+    const Real c = material_.instantaneous_compliance();
+    const Real f = material_.creep_ratio();
+    const Real vtau = scene.speed * material_.relaxation_time();
+    const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    if constexpr (Material::is_viscoelastic) {
+      if (f > 0 && vtau > 0) {
+        if (vtau * eps > slow.a0) {
+          // Glassy limit: the instantaneous compliance, to O(a0 / V tau ln(V tau / a0)) < eps.
+          const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
+          return closed_form(scene, fast, slow, Real(0), c, Real(0), vtau, "glassy limit (closed form)");
+        }
+        if (vtau > eps * slow.a0) return rolling(scene, slow, c, f, vtau, start);
+      }
+    }
+    return closed_form(scene, slow, slow, Real(0), c, f, Real(0), "static (closed form)");
+  }
+
+  /// The residual assembly for a scene (for tests and for users who drive their own iteration).
+  LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const {
+    scene.validate();
+    const Real c = material_.instantaneous_compliance();
+    const Real f = material_.creep_ratio();
+    const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
+    return LineResidual<Real, Quadrature>(problem(scene, slow, f, scene.speed * material_.relaxation_time()),
+                                          options_.terms, options_.leading_edge);
+  }
+
+ private:
+  static LineProblem<Real> problem(const LineScene<Real>& scene, const StaticLineContact<Real>& slow,
+                                   Real f, Real vtau) {
+    return {scene.c1, scene.c2, vtau, f, slow.a0, slow.l, scene.c1 * slow.a0 * slow.a0 * slow.l / 3};
+  }
+
+  Solution closed_form(const LineScene<Real>& scene, const StaticLineContact<Real>& s,
+                       const StaticLineContact<Real>& slow, Real chi, Real c, Real f, Real vtau,
+                       const char* reason) const {
+    using std::log;
+    LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
+    Solution sol{shape, s.d, slow.a0, slow.l, slow.d, chi, true, reason, 0, Real(0), {}, scene.c1,
+                 Real(0), f, c};
+    // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
+    // the load of that compliance; report it as the static strip (vtau = 0 in the pressure).
+    (void)vtau;
+    add_warnings(sol);
+    return sol;
+  }
+
+  Solution rolling(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
+                   Real f, Real vtau, const Solution* start) const {
+    using std::abs;
+    using std::log;
+    using std::pow;
+    using std::sqrt;
+    const LineResidual<Real, Quadrature> res(problem(scene, slow, f, vtau), options_.terms,
+                                             options_.leading_edge);
+    const int n = res.unknowns();
+    Vector x;
+    if (start != nullptr && start->shape.alpha.size() > 0) {
+      x = res.pack(start->shape, start->d);
+    } else {
+      // Seed: the static contact shrunk and shifted as the plane solution at the same V tau/a0.
+      const PlaneSolver<Real, Material> plane(material_);
+      const Real w_plane = scene.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * c);  // plane a0 = slow.a0
+      const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
+      const Real ratio = pow(ps.a / slow.a0, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
+      LineShape<Real> s{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b / slow.a0}};
+      x = res.pack(s, slow.d * ratio * ratio);
+    }
+    Vector r(res.equations());
+    if (!res(x, r)) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
+    if (!res(x, r)) return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain", 0);
+
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real step_tol = pow(eps, Real(0.6));
+    const Real residual_tol = 64 * sqrt(eps);
+    Real cost = r.squaredNorm();
+    Real mu = Real(1e-3);
+    Matrix jac(res.equations(), n);
+    Vector trial(n), rt(res.equations());
+    int it = 0;
+    std::string reason = "iteration limit";
+    bool converged = false;
+    for (; it < options_.max_iterations; ++it) {
+      // Forward-difference Jacobian.
+      for (int j = 0; j < n; ++j) {
+        const Real h = sqrt(eps) * std::max(Real(1), Real(abs(x[j])));
+        trial = x;
+        trial[j] += h;
+        if (!res(trial, rt)) {
+          trial[j] = x[j] - h;
+          if (!res(trial, rt)) return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", it);
+          jac.col(j) = (r - rt) / h;
+        } else {
+          jac.col(j) = (rt - r) / h;
+        }
+      }
+      const Vector grad = jac.transpose() * r;
+      Vector diag = jac.colwise().squaredNorm().transpose();
+      for (int j = 0; j < n; ++j) diag[j] = std::max(diag[j], Real(1e-12));
+      bool accepted = false;
+      Vector step;
+      for (int attempt = 0; attempt < 40; ++attempt) {
+        Matrix a = jac.transpose() * jac;
+        for (int j = 0; j < n; ++j) a(j, j) += mu * diag[j];
+        step = a.ldlt().solve(-grad);
+        trial = x + step;
+        if (res(trial, rt)) {
+          const Real trial_cost = rt.squaredNorm();
+          if (trial_cost < cost) {
+            x = trial;
+            r = rt;
+            cost = trial_cost;
+            mu = std::max(mu / 4, Real(1e-12));
+            accepted = true;
+            break;
+          }
+        }
+        mu *= 8;
+      }
+      if (!accepted) {
+        reason = "no descent step (Levenberg-Marquardt damping exhausted)";
+        break;
+      }
+      const Real rmax = r.cwiseAbs().maxCoeff();
+      if (step.cwiseAbs().maxCoeff() <= step_tol * (1 + x.cwiseAbs().maxCoeff()) && rmax <= residual_tol) {
+        converged = true;
+        reason = "converged";
+        ++it;
+        break;
+      }
+      if (rmax <= 4 * eps) {
+        converged = true;
+        reason = "converged (residual at rounding level)";
+        ++it;
+        break;
+      }
+    }
+    Solution sol = make(scene, slow, c, f, vtau, res, x, r, converged, reason, it);
+    return sol;
+  }
+
+  Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
+                Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
+                const Vector& r, bool converged, std::string reason, int iterations) const {
+    Solution sol{res.shape(x), res.penetration(x), slow.a0, slow.l, slow.d, Real(0), converged,
+                 std::move(reason), iterations, r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0),
+                 {}, scene.c1, vtau, f, c};
+    sol.chi = rolling_friction(sol, res);
+    add_warnings(sol);
+    return sol;
+  }
+
+  Solution failure(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
+                   Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
+                   const char* reason, int iterations) const {
+    Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
+    return make(scene, slow, c, f, vtau, res, x, r, false, reason, iterations);
+  }
+
+  /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q)
+  ///     = C1 [b G / 2 + V (f a^2 I2/I0 + 2 a b I1/I0) / (4 (1 + f))]      (Eq. 54; docs/theory.md 4)
+  static Real rolling_friction(const Solution& sol, const LineResidual<Real, Quadrature>& res) {
+    std::vector<Real> nodes, weights;
+    const Real l = sol.shape.l;
+    detail::append_graded_nodes<Quadrature>(nodes, weights, l, l / 2, l * std::numeric_limits<Real>::epsilon() * 16);
+    Real num = 0, den = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      const auto s = sol.functions(nodes[j]);
+      if (!(s.a > 0)) continue;
+      const Real alpha = (1 + sol.f) * s.a / sol.vtau;
+      const Real vn = sol.c1 * (s.b * s.g / 2 + sol.vtau *
+                                                  (sol.f * s.a * s.a * special::bessel_i2_over_i0(alpha) +
+                                                   2 * s.a * s.b * special::bessel_i1_over_i0(alpha)) /
+                                                  (4 * (1 + sol.f)));
+      num += weights[j] * vn;
+      den += weights[j] * s.f0;
+    }
+    (void)res;
+    return sol.c1 * num / den;
+  }
+
+  static void add_warnings(Solution& sol) {
+    const Real aspect = sol.shape.l / sol.shape.a(Real(0));
+    if (aspect < 3)
+      sol.warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
+                             " < 3: outside the line-contact theory's domain of validity");
+  }
+
+  Material material_;
+  LineOptions options_;
+};
+
+/// The common case: double precision, standard linear solid, 12-point Gauss-Legendre panels.
+using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
+
+}  // namespace viscoroll
