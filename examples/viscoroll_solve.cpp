@@ -1,14 +1,23 @@
 // viscoroll-solve: solve one scene for one or more relaxation times and print one JSON object
 // per line (see README.md). Exit status: 0 all converged, 1 a solution did not converge,
 // 2 bad input (message on stderr, nothing on stdout).
+// --method plane: Hunter's plane problem (--load per unit length, --c2 ignored).
+// --method line: the line-contact solver (--c2 required, --load the total load, --grid N the
+// Chebyshev terms, default 6); the taus are solved in the given order with continuation, and each
+// line also carries l, d, l0, d0 (the static long-term l and d), terms, reason and warnings.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/solve_options.hpp"
+#include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
 namespace {
@@ -45,6 +54,85 @@ int run_plane(const SolveOptions& o) {
   return all_converged ? 0 : 1;
 }
 
+/// A JSON number, or null where the value is not finite (a failed iteration's residual).
+std::string json_number(double x) { return std::isfinite(x) ? number(x) : std::string("null"); }
+
+/// A JSON string literal.
+std::string json_string(std::string_view text) {
+  std::string out = "\"";
+  for (const char ch : text) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (ch == '"' || ch == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (u < 0x20) {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(u));
+      out += buffer;
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+/// --grid for the line method: LineOptions::terms, default 6.
+int line_terms(const SolveOptions& o) {
+  constexpr long default_terms = 6, max_terms = 64;
+  const long n = o.grid.value_or(default_terms);
+  if (n < 1 || n > max_terms)
+    throw std::invalid_argument("viscoroll-solve: --grid (line: Chebyshev terms) expects 1 <= N <= " +
+                                std::to_string(max_terms) + ", got " + std::to_string(n));
+  return static_cast<int>(n);
+}
+
+/// The line-contact (3-D) solver; the taus are solved in the given order, each seeded with the
+/// previous converged iterated solution (continuation; a closed form carries no more than the
+/// solver's own seed, so it is not passed on).
+int run_line(const SolveOptions& o) {
+  using Solver = viscoroll::LineSolverD;
+  using Solution = Solver::Solution;
+  if (!o.c2) throw std::invalid_argument("viscoroll-solve: --method line needs --c2; " + viscoroll::cli::usage());
+  viscoroll::LineOptions options;
+  options.terms = line_terms(o);
+  const viscoroll::LineScene<double> scene{o.c1, *o.c2, o.load, o.speed};
+  scene.validate();
+  std::vector<Solver> solvers;
+  for (double tau : o.tau)
+    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau), options);
+  bool all_converged = true;
+  std::optional<Solution> previous;
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const Solution* seed = previous && previous->converged && previous->iterations > 0 ? &*previous : nullptr;
+    Solution s = solvers[i].solve(scene, seed);
+    const auto peak = s.strip(0.0).peak();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    all_converged = all_converged && s.converged;
+    std::string warnings = "[";
+    for (std::size_t k = 0; k < s.warnings.size(); ++k) {
+      if (k) warnings += ',';
+      warnings += json_string(s.warnings[k]);
+    }
+    warnings += "]";
+    std::cout << "{\"method\":\"line\",\"tau\":" << number(o.tau[i]) << ",\"vtau\":" << number(o.speed * o.tau[i])
+              << ",\"a0\":" << json_number(s.a(0.0)) << ",\"b0\":" << json_number(s.b(0.0))
+              << ",\"l\":" << json_number(s.l()) << ",\"d\":" << json_number(s.d)
+              << ",\"a_long_term\":" << number(s.a_long_term) << ",\"l0\":" << number(s.l_long_term)
+              << ",\"d0\":" << number(s.d_long_term) << ",\"chi\":" << json_number(s.chi)
+              << ",\"pmax\":" << json_number(peak.pressure) << ",\"pmax_x\":" << json_number(peak.x)
+              << ",\"seconds\":" << number(seconds) << ",\"converged\":" << (s.converged ? "true" : "false")
+              << ",\"iterations\":" << s.iterations << ",\"residual\":" << json_number(s.residual)
+              << ",\"terms\":" << options.terms << ",\"reason\":" << json_string(s.reason)
+              << ",\"warnings\":" << warnings << "}\n";
+    if (!s.converged)
+      std::cerr << "viscoroll-solve: line solution for tau = " << number(o.tau[i])
+                << " did not converge: " << s.reason << "\n";
+    previous = std::move(s);
+  }
+  return all_converged ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,7 +141,7 @@ int main(int argc, char** argv) {
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     switch (options.method) {
       case Method::plane: return run_plane(options);
-      case Method::line: std::cerr << "viscoroll-solve: --method line is not built yet\n"; return 2;
+      case Method::line: return run_line(options);
       case Method::bem: std::cerr << "viscoroll-solve: --method bem is not built yet\n"; return 2;
     }
   } catch (const std::invalid_argument& e) {
