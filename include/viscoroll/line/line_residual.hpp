@@ -148,7 +148,7 @@ class LineResidual {
     const Real d = penetration(x);
     const int m = points();
     for (int i = 0; i < m; ++i) {
-      Real r34, rle;
+      Real r34 = 0, rle = 0;
       if (!at_point(s, d, t_[i] * s.l, r34, rle)) return false;
       // (34) depends on b through C1 V b, the leading-edge condition through its slope C1 V (as
       // V tau >> a): adding V/a_ref times the latter (scaled to an error in b/a_ref) cancels the b
