@@ -149,12 +149,13 @@ class LineSolver {
         if (vtau * eps > slow.a0) {
           // Glassy limit: the instantaneous compliance, to O(a0 / V tau ln(V tau / a0)) < eps.
           const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
-          return closed_form(scene, fast, slow, Real(0), c, Real(0), vtau, "glassy limit (closed form)");
+          // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
+          return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");
         }
         if (vtau > eps * slow.a0) return rolling(scene, slow, c, f, vtau, start);
       }
     }
-    return closed_form(scene, slow, slow, Real(0), c, f, Real(0), "static (closed form)");
+    return closed_form(scene, slow, slow, c, f, "static (closed form)");
   }
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
@@ -174,15 +175,13 @@ class LineSolver {
   }
 
   Solution closed_form(const LineScene<Real>& scene, const StaticLineContact<Real>& s,
-                       const StaticLineContact<Real>& slow, Real chi, Real c, Real f, Real vtau,
-                       const char* reason) const {
+                       const StaticLineContact<Real>& slow, Real c, Real f, const char* reason) const {
     using std::log;
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
-    Solution sol{shape, s.d, slow.a0, slow.l, slow.d, chi, true, reason, 0, Real(0), {}, scene.c1,
-                 Real(0), f, c};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
-    // the load of that compliance; report it as the static strip (vtau = 0 in the pressure).
-    (void)vtau;
+    // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
+    Solution sol{shape, s.d, slow.a0, slow.l, slow.d, Real(0), true, reason, 0, Real(0), {}, scene.c1,
+                 Real(0), f, c};
     add_warnings(sol);
     return sol;
   }
@@ -277,8 +276,7 @@ class LineSolver {
         break;
       }
     }
-    Solution sol = make(scene, slow, c, f, vtau, res, x, r, converged, reason, it);
-    return sol;
+    return make(scene, slow, c, f, vtau, res, x, r, converged, reason, it);
   }
 
   Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
@@ -287,7 +285,7 @@ class LineSolver {
     Solution sol{res.shape(x), res.penetration(x), slow.a0, slow.l, slow.d, Real(0), converged,
                  std::move(reason), iterations, r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0),
                  {}, scene.c1, vtau, f, c};
-    sol.chi = rolling_friction(sol, res);
+    sol.chi = rolling_friction(sol);
     add_warnings(sol);
     return sol;
   }
@@ -299,9 +297,9 @@ class LineSolver {
     return make(scene, slow, c, f, vtau, res, x, r, false, reason, iterations);
   }
 
-  /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q)
-  ///     = C1 [b G / 2 + V (f a^2 I2/I0 + 2 a b I1/I0) / (4 (1 + f))]      (Eq. 54; docs/theory.md 4)
-  static Real rolling_friction(const Solution& sol, const LineResidual<Real, Quadrature>& res) {
+  /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q) = (C1/4) strip_first_moment
+  /// (Eq. 54 strip by strip in the form (P7); docs/theory.md section 4).
+  static Real rolling_friction(const Solution& sol) {
     std::vector<Real> nodes, weights;
     const Real l = sol.shape.l;
     detail::append_graded_nodes<Quadrature>(nodes, weights, l, l / 2, l * std::numeric_limits<Real>::epsilon() * 16);
@@ -310,14 +308,12 @@ class LineSolver {
       const auto s = sol.functions(nodes[j]);
       if (!(s.a > 0)) continue;
       const Real alpha = (1 + sol.f) * s.a / sol.vtau;
-      const Real vn = sol.c1 * (s.b * s.g / 2 + sol.vtau *
-                                                  (sol.f * s.a * s.a * special::bessel_i2_over_i0(alpha) +
-                                                   2 * s.a * s.b * special::bessel_i1_over_i0(alpha)) /
-                                                  (4 * (1 + sol.f)));
+      const Real vn = sol.c1 / 4 *
+                      strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, special::bessel_i1_over_i0(alpha),
+                                         special::bessel_i2_over_i0(alpha));
       num += weights[j] * vn;
       den += weights[j] * s.f0;
     }
-    (void)res;
     return sol.c1 * num / den;
   }
 
