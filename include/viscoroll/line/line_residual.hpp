@@ -29,6 +29,7 @@
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/detail/graded_panels.hpp>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
@@ -49,38 +50,6 @@ struct LineProblem {
   Real l_ref;        ///< long-term static half length (scale of l)
   Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52)
 };
-
-namespace detail {
-
-/// Composite rule on [0, length]: panels doubling from `first` and halving toward `length` down
-/// to width `finest` (docs/line-operators.md); appends (node, weight) pairs.
-template <class Quadrature, class Real>
-void append_graded_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
-                         Real finest) {
-  if (!(length > 0)) return;
-  const auto& x = Quadrature::nodes();
-  const auto& wt = Quadrature::weights();
-  const auto panel = [&](Real lo, Real hi) {
-    const Real half = (hi - lo) / 2, mid = (lo + hi) / 2;
-    for (int j = 0; j < Quadrature::points; ++j) {
-      s.push_back(mid + half * Real(x[j]));
-      w.push_back(half * Real(wt[j]));
-    }
-  };
-  Real h = std::min(first, length);
-  if (length > finest) h = std::min(h, Real(length / 2));  // the end grading starts at once
-  panel(Real(0), h);
-  while (h < length) {
-    // Double, but never end a panel closer to `length` than the panel is wide (a pole just
-    // beyond the end would sit within a fraction of a half-width of the panel), down to `finest`.
-    Real next = std::min(Real(2 * h), length);
-    if (length - h > finest) next = std::min(next, Real(h + (length - h) / 2));
-    panel(h, next);
-    h = next;
-  }
-}
-
-}  // namespace detail
 
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule.
 template <RealScalar Real, class Quadrature>
