@@ -25,6 +25,16 @@
 
 namespace viscoroll {
 
+/// The first moment of a strip's pressure in the cancellation-free form (P7) of docs/theory.md:
+///   4 c (1 + f) int x p dx / C1 = 2 b G + V tau (f a^2 I2/I0 + 2 a b I1/I0) / (1 + f),
+/// r_i = I1/I0(alpha), r_2 = I2/I0(alpha), alpha = (1 + f) a / V tau (every term is non-negative when
+/// b, G >= 0; the paper's (54) subtracts nearly equal terms as V tau grows). Shared by the plane
+/// solver (chi = C1 times this over a0^2) and, strip by strip, the line solver.
+template <RealScalar Real>
+Real strip_first_moment(Real a, Real b, Real g, Real vtau, Real f, Real r_i, Real r_2) {
+  return 2 * b * g + vtau * (f * a * a * r_2 + 2 * a * b * r_i) / (1 + f);
+}
+
 /// Location and value of the largest pressure on a strip.
 template <RealScalar Real>
 struct PressurePeak {

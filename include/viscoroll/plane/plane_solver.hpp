@@ -155,7 +155,7 @@ class PlaneSolver {
     // (P7): chi = C1 xbar, xbar = [2 b G + V tau (f a^2 I2/I0 + 2 a b r_I) / (1+f)] / a0^2,
     // every term non-negative (the paper's (54) cancels as V tau grows).
     const Real delta = bessel_i2_over_i0(alpha);
-    const Real xbar = (2 * b * g + vtau * (f * a * a * delta + 2 * a * b * r_i) / (1 + f)) / (a0 * a0);
+    const Real xbar = strip_first_moment(a, b, g, vtau, f, r_i, delta) / (a0 * a0);
     return Solution{a, b, g, a0, f0, q, scene.c1 * xbar, converged, iterations, residual,
                     StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
   }
