@@ -5,6 +5,10 @@
 // --method line: the line-contact solver (--c2 required, --load the total load, --grid N the
 // Chebyshev terms, default 6); the taus are solved in the given order with continuation, and each
 // line also carries l, d, l0, d0 (the static long-term l and d), terms, reason and warnings.
+// --method bem: the 3-D boundary-element solver (--c2 required, --load the total load, --grid N
+// elements per semi-axis of the static long-term Hertz ellipse, default 16); each line carries
+// a0 = a(0), b0 = b(0), l, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason,
+// iterations (active set), gmres_iterations and residual. docs/bem.md.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +21,7 @@
 #include <vector>
 
 #include "cli/solve_options.hpp"
+#include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
@@ -133,6 +138,58 @@ int run_line(const SolveOptions& o) {
   return all_converged ? 0 : 1;
 }
 
+/// --grid for the bem method: elements per semi-axis, default 16.
+int bem_grid(const SolveOptions& o) {
+  constexpr long default_grid = 16, max_grid = 512;
+  const long n = o.grid.value_or(default_grid);
+  if (n < 2 || n > max_grid)
+    throw std::invalid_argument("viscoroll-solve: --grid (bem: elements per semi-axis) expects 2 <= N <= " +
+                                std::to_string(max_grid) + ", got " + std::to_string(n));
+  return static_cast<int>(n);
+}
+
+/// The boundary-element solver; the taus share one grid (it is sized by the static long-term
+/// contact), and each solve starts from the previous converged contact.
+int run_bem(const SolveOptions& o) {
+  using Solver = viscoroll::BemSolverD;
+  using Solution = viscoroll::BemSolution<double>;
+  if (!o.c2) throw std::invalid_argument("viscoroll-solve: --method bem needs --c2; " + viscoroll::cli::usage());
+  viscoroll::BemOptions options;
+  options.grid = bem_grid(o);
+  const viscoroll::BemScene<double> scene{o.c1, *o.c2, o.load, o.speed};
+  scene.validate();
+  std::vector<Solver> solvers;
+  for (double tau : o.tau)
+    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau), options);
+  bool all_converged = true;
+  std::optional<Solution> previous;
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const Solution* seed = previous && previous->converged ? &*previous : nullptr;
+    Solution s = solvers[i].solve(scene, seed);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    all_converged = all_converged && s.converged;
+    std::size_t peak = 0;
+    for (std::size_t q = 0; q < s.pressure.size(); ++q)
+      if (s.pressure[q] > s.pressure[peak]) peak = q;
+    const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
+    std::cout << "{\"method\":\"bem\",\"tau\":" << number(o.tau[i]) << ",\"vtau\":" << number(o.speed * o.tau[i])
+              << ",\"a0\":" << json_number(s.a0) << ",\"b0\":" << json_number(s.b0) << ",\"l\":" << json_number(s.l)
+              << ",\"d\":" << json_number(s.d) << ",\"a_long_term\":" << number(s.long_term.a)
+              << ",\"l0\":" << number(s.long_term.b) << ",\"d0\":" << number(s.long_term.d)
+              << ",\"chi\":" << json_number(s.chi) << ",\"pmax\":" << json_number(s.pressure[peak])
+              << ",\"pmax_x\":" << json_number(s.grid.x(peak_i)) << ",\"seconds\":" << number(seconds)
+              << ",\"converged\":" << (s.converged ? "true" : "false") << ",\"iterations\":" << s.iterations
+              << ",\"gmres_iterations\":" << s.krylov_iterations << ",\"residual\":" << json_number(s.residual)
+              << ",\"grid\":" << options.grid << ",\"cells\":" << s.grid.size() << ",\"reason\":" << json_string(s.reason)
+              << "}\n";
+    if (!s.converged)
+      std::cerr << "viscoroll-solve: bem solution for tau = " << number(o.tau[i]) << " did not converge: " << s.reason << "\n";
+    previous = std::move(s);
+  }
+  return all_converged ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -142,7 +199,7 @@ int main(int argc, char** argv) {
     switch (options.method) {
       case Method::plane: return run_plane(options);
       case Method::line: return run_line(options);
-      case Method::bem: std::cerr << "viscoroll-solve: --method bem is not built yet\n"; return 2;
+      case Method::bem: return run_bem(options);
     }
   } catch (const std::invalid_argument& e) {
     std::cerr << e.what() << "\n";

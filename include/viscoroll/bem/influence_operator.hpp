@@ -1,0 +1,223 @@
+// viscoroll: the boundary-element operator of the 3-D reference solver, a 2-D convolution of the
+// cell pressures with the viscoelastic influence coefficients, applied by FFT on a zero-padded grid.
+//
+// On a uniform grid of nx x ny rectangles hx x hy with cell centres (x_i, y_j), the displacement
+// at cell centre (i, j) due to constant pressures p_kl is (docs/bem.md, (B6))
+//   u_ij = c sum_kl [K_e + sum_k f_k M_{V tau_k}](x_i - x_k, y_j - y_l) p_kl,
+// K_e of (B1), M of (B3), c = (1 - nu)/(2 pi mu_D): Hunter's Eq. (2) with Boussinesq's Eq. (3).
+// The coefficient depends only on the offset, so u = K * p is a discrete convolution; with p
+// zero-padded to nfx >= 2 nx - 1 by nfy >= 2 ny - 1 the circular convolution equals it (B7).
+// The kernel is even in y and, unless V tau = 0, not even in x: the operator is not symmetric.
+#pragma once
+
+#include <algorithm>
+#include <complex>
+#include <cstddef>
+#include <unsupported/Eigen/FFT>
+#include <vector>
+#include <viscoroll/bem/rectangle_influence.hpp>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/validate.hpp>
+#include <viscoroll/material/generalized_maxwell.hpp>
+
+namespace viscoroll::bem {
+
+/// A material the boundary-element solver accepts: a ConstitutiveModel (one relaxation time) or a
+/// PronySeriesModel (several).
+template <class M>
+concept MemoryModel = ConstitutiveModel<M> || PronySeriesModel<M>;
+
+/// The memory terms (f_k, tau_k) of Eq. (B10): those of a Prony series, or the single term
+/// (f, tau) of Eq. (1); none for an elastic material.
+template <MemoryModel M>
+std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
+  using Real = typename M::real_type;
+  std::vector<PronyTerm<Real>> terms;
+  if constexpr (M::is_viscoelastic) {
+    if constexpr (PronySeriesModel<M>) {
+      for (const auto& t : m.memory_terms())
+        if (t.f > 0) terms.push_back(PronyTerm<Real>{t.f, t.tau});
+    } else {
+      if (m.creep_ratio() > 0) terms.push_back(PronyTerm<Real>{m.creep_ratio(), m.relaxation_time()});
+    }
+  }
+  return terms;
+}
+
+/// A uniform grid of nx x ny cells hx x hy, centred on the origin (nx, ny odd, so a row of cell
+/// centres lies on y = 0 and a column on x = 0). Cell (i, j) has centre
+/// ((i - (nx-1)/2) hx, (j - (ny-1)/2) hy); the flat index is i + nx j.
+template <RealScalar Real>
+struct BemGrid {
+  int nx, ny;
+  Real hx, hy;
+
+  Real x(int i) const { return Real(i - (nx - 1) / 2) * hx; }
+  Real y(int j) const { return Real(j - (ny - 1) / 2) * hy; }
+  std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(j);
+  }
+};
+
+/// (B6): the influence coefficients per unit pressure of every offset (di, dj), |di| < nx,
+/// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k.
+template <RealScalar Real>
+class InfluenceTable {
+ public:
+  InfluenceTable(const BemGrid<Real>& grid, Real compliance, const std::vector<PronyTerm<Real>>& terms, Real speed)
+      : nx_(grid.nx), ny_(grid.ny), k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)) {
+    using W = coefficient_real_t<Real>;
+    const int m = nx_ - 1;
+    const W hx = W(grid.hx), hy = W(grid.hy);
+    for (int j = 0; j < ny_; ++j) {
+      const W y = W(j) * hy;
+      std::vector<W> row(static_cast<std::size_t>(2 * m + 1));
+      for (int i = -m; i <= m; ++i) row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
+      std::vector<W> total = row;
+      for (const auto& t : terms) {
+        const W length = W(speed) * W(t.tau);
+        // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4).
+        const std::vector<W> mem = length > 0 ? memory_row<W>(m, y, hx, hy, length) : row;
+        for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
+      }
+      for (int i = -m; i <= m; ++i)
+        k_[static_cast<std::size_t>(i + m) + static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
+            Real(W(compliance) * total[static_cast<std::size_t>(i + m)]);
+    }
+  }
+
+  /// The coefficient of offset (di, dj) = (i - k, j - l): displacement at cell (i, j) per unit
+  /// pressure on cell (k, l).
+  Real operator()(int di, int dj) const {
+    const int j = dj < 0 ? -dj : dj;
+    return k_[static_cast<std::size_t>(di + nx_ - 1) + static_cast<std::size_t>(2 * nx_ - 1) * static_cast<std::size_t>(j)];
+  }
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+
+ private:
+  int nx_, ny_;
+  std::vector<Real> k_;
+};
+
+namespace detail {
+
+/// Smallest 2^a 3^b 5^c >= n (sizes kissfft transforms fastest).
+inline int fft_size(int n) {
+  int best = 1;
+  while (best < n) best *= 2;
+  for (int p2 = 1; p2 < 2 * n; p2 *= 2)
+    for (int p3 = p2; p3 < 2 * n; p3 *= 3)
+      for (int p5 = p3; p5 < 2 * n; p5 *= 5)
+        if (p5 >= n && p5 < best) best = p5;
+  return best;
+}
+
+}  // namespace detail
+
+/// (B7): the operator u = K * p applied by FFT (Eigen's FFT, kissfft back end) on the grid
+/// zero-padded to nfx x nfy. apply() costs two 2-D transforms of the padded size.
+template <RealScalar Real>
+class ConvolutionOperator {
+ public:
+  using Complex = std::complex<Real>;
+
+  explicit ConvolutionOperator(const InfluenceTable<Real>& table)
+      : nx_(table.nx()), ny_(table.ny()), nfx_(detail::fft_size(2 * table.nx() - 1)),
+        nfy_(detail::fft_size(2 * table.ny() - 1)), kernel_(static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(nfy_)),
+        work_(kernel_.size()), line_x_(static_cast<std::size_t>(nfx_)), line_y_(static_cast<std::size_t>(nfy_)),
+        out_x_(static_cast<std::size_t>(nfx_)), out_y_(static_cast<std::size_t>(nfy_)) {
+    std::fill(work_.begin(), work_.end(), Complex(0));
+    for (int dj = -(ny_ - 1); dj <= ny_ - 1; ++dj)
+      for (int di = -(nx_ - 1); di <= nx_ - 1; ++di)
+        work_[at((di + nfx_) % nfx_, (dj + nfy_) % nfy_)] = Complex(table(di, dj));
+    transform(work_, nfy_, false);
+    kernel_ = work_;
+  }
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  int fft_nx() const { return nfx_; }
+  int fft_ny() const { return nfy_; }
+
+  /// u = K * p on the nx x ny grid (flat index i + nx j); u and p have nx ny entries.
+  template <class In, class Out>
+  void apply(const In& p, Out& u) const {
+    std::fill(work_.begin(), work_.end(), Complex(0));
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
+    transform(work_, ny_, false);
+    for (std::size_t q = 0; q < work_.size(); ++q) work_[q] *= kernel_[q];
+    transform(work_, ny_, true);
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
+  }
+
+  /// Multiplies the padded spectrum of p by `symbol` (nfx nfy values, index m + nfx n) instead of
+  /// the kernel's: a circulant operator on the padded grid, restricted to the nx x ny grid.
+  template <class In, class Out>
+  void apply_symbol(const std::vector<Complex>& symbol, const In& p, Out& u) const {
+    std::fill(work_.begin(), work_.end(), Complex(0));
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
+    transform(work_, ny_, false);
+    for (std::size_t q = 0; q < work_.size(); ++q) work_[q] *= symbol[q];
+    transform(work_, ny_, true);
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
+  }
+
+ private:
+  std::size_t at(int i, int j) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(j);
+  }
+
+  /// 2-D transform of the padded array; only the first `rows` rows are non-zero on input of the
+  /// forward transform (or needed on output of the inverse), so only those are transformed in x.
+  void transform(std::vector<Complex>& a, int rows, bool inverse) const {
+    if (!inverse) {
+      for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < nfx_; ++i) line_x_[static_cast<std::size_t>(i)] = a[at(i, j)];
+        fft_.fwd(out_x_, line_x_);
+        for (int i = 0; i < nfx_; ++i) a[at(i, j)] = out_x_[static_cast<std::size_t>(i)];
+      }
+      for (int i = 0; i < nfx_; ++i) {
+        for (int j = 0; j < nfy_; ++j) line_y_[static_cast<std::size_t>(j)] = a[at(i, j)];
+        fft_.fwd(out_y_, line_y_);
+        for (int j = 0; j < nfy_; ++j) a[at(i, j)] = out_y_[static_cast<std::size_t>(j)];
+      }
+    } else {
+      for (int i = 0; i < nfx_; ++i) {
+        for (int j = 0; j < nfy_; ++j) line_y_[static_cast<std::size_t>(j)] = a[at(i, j)];
+        fft_.inv(out_y_, line_y_);
+        for (int j = 0; j < nfy_; ++j) a[at(i, j)] = out_y_[static_cast<std::size_t>(j)];
+      }
+      for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < nfx_; ++i) line_x_[static_cast<std::size_t>(i)] = a[at(i, j)];
+        fft_.inv(out_x_, line_x_);
+        for (int i = 0; i < nfx_; ++i) a[at(i, j)] = out_x_[static_cast<std::size_t>(i)];
+      }
+    }
+  }
+
+  int nx_, ny_, nfx_, nfy_;
+  std::vector<Complex> kernel_;
+  mutable std::vector<Complex> work_, line_x_, line_y_, out_x_, out_y_;
+  mutable Eigen::FFT<Real> fft_;
+};
+
+/// The direct O((nx ny)^2) sum u = K * p, for tests of the FFT apply.
+template <RealScalar Real, class In, class Out>
+void apply_direct(const InfluenceTable<Real>& table, const In& p, Out& u) {
+  const int nx = table.nx(), ny = table.ny();
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      Real s = 0;
+      for (int l = 0; l < ny; ++l)
+        for (int k = 0; k < nx; ++k) s += table(i - k, j - l) * p[static_cast<std::size_t>(k + nx * l)];
+      u[static_cast<std::size_t>(i + nx * j)] = s;
+    }
+}
+
+}  // namespace viscoroll::bem

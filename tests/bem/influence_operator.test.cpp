@@ -1,0 +1,73 @@
+// Tests of the convolution operator (docs/bem.md B6-B7): the FFT apply against the direct sum,
+// the table's symmetry (even in y; not even in x when rolling), and the Prony-series memory
+// (B10) reducing to the standard linear solid.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+#include <viscoroll/bem/influence_operator.hpp>
+#include <viscoroll/material/generalized_maxwell.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+
+using viscoroll::GeneralizedMaxwell;
+using viscoroll::PronyTerm;
+using viscoroll::StandardLinearSolid;
+using namespace viscoroll::bem;
+
+TEMPLATE_TEST_CASE("bem: FFT apply equals the direct sum", "[bem]", float, double, long double) {
+  using Real = TestType;
+  const BemGrid<Real> grid{9, 7, Real(0.1), Real(0.4)};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uni(0, 1);
+  for (const Real speed : {Real(0), Real(0.3)}) {
+    const InfluenceTable<Real> table(grid, Real(0.08), {PronyTerm<Real>{Real(9), Real(1)}}, speed);
+    const ConvolutionOperator<Real> op(table);
+    std::vector<Real> p(grid.size()), fast(grid.size()), direct(grid.size());
+    for (auto& v : p) v = Real(uni(rng));
+    op.apply(p, fast);
+    apply_direct(table, p, direct);
+    Real scale = 0;
+    for (std::size_t q = 0; q < p.size(); ++q) scale = std::max(scale, std::abs(direct[q]));
+    // FFT rounding: O(eps log(n)) times the largest entry; Eigen's kissfft computes its twiddle
+    // factors in double, so a long double transform is accurate to double's eps, not its own.
+    const Real e = std::max(std::numeric_limits<Real>::epsilon(), Real(std::numeric_limits<double>::epsilon()));
+    for (std::size_t q = 0; q < p.size(); ++q) CHECK(std::abs(fast[q] - direct[q]) <= 200 * e * scale);
+  }
+}
+
+TEST_CASE("bem: the rolling kernel is even in y and not in x", "[bem]") {
+  const BemGrid<double> grid{11, 11, 0.1, 0.3};
+  const InfluenceTable<double> rolling(grid, 1.0, {PronyTerm<double>{9.0, 1.0}}, 0.2);
+  const InfluenceTable<double> still(grid, 1.0, {PronyTerm<double>{9.0, 1.0}}, 0.0);
+  for (int j = 0; j < 5; ++j) CHECK(rolling(3, j) == rolling(3, -j));
+  // Memory looks ahead (Eq. 2): a field point behind the load (offset di < 0) has already
+  // passed under it and crept; one ahead of it (di > 0) has not.
+  CHECK(rolling(-2, 0) > rolling(2, 0));
+  CHECK(still(2, 0) == still(-2, 0));
+  // V tau = 0: the long-term compliance, (1 + f) K_e.
+  CHECK(still(1, 1) == Approx(10 * rectangle_influence(0.1, 0.3, 0.1, 0.3)).epsilon(1e-14));
+}
+
+TEST_CASE("bem: Prony memory terms add (B10) and one term is the standard linear solid", "[bem]") {
+  const BemGrid<double> grid{7, 5, 0.1, 0.3};
+  const StandardLinearSolid<double> sls(1.0, 0.3, 9.0, 2.0);
+  const GeneralizedMaxwell<double> one(1.0, 0.3, {{9.0, 2.0}});
+  const GeneralizedMaxwell<double> split(1.0, 0.3, {{4.0, 2.0}, {5.0, 2.0}});
+  const double c = sls.instantaneous_compliance();
+  REQUIRE(one.instantaneous_compliance() == c);
+  REQUIRE(one.creep_ratio() == 9.0);
+  const InfluenceTable<double> a(grid, c, memory_terms_of(sls), 0.7);
+  const InfluenceTable<double> b(grid, c, memory_terms_of(one), 0.7);
+  const InfluenceTable<double> s(grid, c, memory_terms_of(split), 0.7);
+  for (int i = -6; i <= 6; ++i)
+    for (int j = 0; j < 5; ++j) {
+      CHECK(a(i, j) == b(i, j));
+      CHECK(s(i, j) == Approx(a(i, j)).epsilon(1e-14));
+    }
+  // Creep function (B9): J(0) mu_D = 1, J(inf) mu_D = 1 + sum f_k.
+  CHECK(split.creep(0.0) == 1.0);
+  CHECK(split.creep(1e6) == Approx(10.0).epsilon(1e-15));
+  CHECK_THROWS_WITH((GeneralizedMaxwell<double>(1.0, 0.3, {{1.0, 1.0}, {-1.0, 1.0}})), Catch::Contains("f[1] = -1"));
+  CHECK_THROWS_WITH((GeneralizedMaxwell<double>(1.0, 0.3, {{1.0, -2.0}})), Catch::Contains("tau[0] = -2"));
+}
