@@ -61,17 +61,18 @@ class LineResidual {
   /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
   /// balances each block: (34) at N + 1 points and the load (47) fix the N coefficients of a, l and
   /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b.
-  LineResidual(LineProblem<Real> problem, int terms, LeadingEdgeForm form = LeadingEdgeForm::exterior)
-      : p_(problem), n_(terms), form_(form) {
+  LineResidual(LineProblem<Real> problem, int terms, LeadingEdgeForm form = LeadingEdgeForm::exterior,
+               LineBasis basis = LineBasis::t_squared)
+      : p_(problem), n_(terms), form_(form), basis_(basis) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     using std::cos;
     using std::sqrt;
     const Real pi = boost::math::constants::pi<Real>();
     const int m = points();
     for (int i = 1; i <= m; ++i) {
-      // Chebyshev points in u = 2 t^2 - 1, t = sqrt((1 + u)/2) in (0, 1).
-      const Real u = cos(pi * Real(2 * i - 1) / Real(2 * m));
-      t_.push_back(sqrt((1 + u) / 2));
+      // Chebyshev points in the expansion variable v; t = sqrt(1 - w(v)) in (0, 1).
+      const Real v = cos(pi * Real(2 * i - 1) / Real(2 * m));
+      t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, v)));
     }
     using std::log;
     t_max_ = -log(std::numeric_limits<Real>::epsilon()) + 8;
@@ -88,7 +89,7 @@ class LineResidual {
 
   LineShape<Real> shape(const Vector& x) const {
     using std::exp;
-    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}};
+    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}, basis_};
     for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
     for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
     return s;
@@ -96,8 +97,11 @@ class LineResidual {
   Real penetration(const Vector& x) const { return x[2 * n_ + 2] * p_.c1 * p_.a_ref * p_.a_ref; }
 
   /// The unknowns of a shape and penetration.
-  Vector pack(const LineShape<Real>& s, Real d) const {
+  Vector pack(const LineShape<Real>& given, Real d) const {
     using std::log;
+    // Same variable and no more terms: pad with zeros (exact); otherwise re-expand.
+    const bool pad = given.basis == basis_ && int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1;
+    const LineShape<Real> s = pad ? given : given.reexpanded(basis_, n_);
     Vector x = Vector::Zero(unknowns());
     for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
     for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
@@ -229,7 +233,7 @@ class LineResidual {
   Real end_width(const LineShape<Real>& s, Real len) const {
     using std::exp;
     const Real j01 = Real(2.404825557695772768621631879326454643124L);
-    const Real a_end = s.a_ref * exp(LineShape<Real>::chebyshev(s.alpha, Real(1)));
+    const Real a_end = s.a_ref * s.end_factor();
     const Real cc = j01 * p_.vtau / ((1 + p_.f) * a_end);
     const Real beyond = s.l * cc * cc / 2;  // 1 - t^2 = -cc^2 at t = 1 + cc^2/2
     return std::max(Real(beyond / 4), Real(len * std::numeric_limits<Real>::epsilon()));
@@ -238,6 +242,7 @@ class LineResidual {
   LineProblem<Real> p_;
   int n_;
   LeadingEdgeForm form_;
+  LineBasis basis_;
   std::vector<Real> t_;
   Real t_max_;
 };

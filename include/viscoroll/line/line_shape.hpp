@@ -8,12 +8,19 @@
 // any coefficients. G (36), F0 (33) and Q (46) follow pointwise (docs/theory.md section 4).
 #pragma once
 
+#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
+
+/// The variable in which a(y) and b(y) are expanded (w = 1 - t^2).
+enum class LineBasis {
+  t_squared,  ///< v = 1 - 2 w = 2 t^2 - 1
+  s,          ///< v = 2 sqrt(w) - 1 (resolves odd powers of a ~ sqrt(1 - t^2) at the ends)
+};
 
 /// a(y), b(y) of the contact and the functions of y that follow from them.
 template <RealScalar Real>
@@ -22,6 +29,28 @@ struct LineShape {
   Real l;                   ///< half length
   std::vector<Real> alpha;  ///< Chebyshev coefficients of ln(a / (a_ref sqrt(1 - t^2)))
   std::vector<Real> beta;   ///< Chebyshev coefficients of b / a_ref
+  LineBasis basis = LineBasis::t_squared;
+
+  /// The expansion variable v in [-1, 1] at w = 1 - t^2.
+  static Real coordinate(LineBasis basis, Real w) {
+    using std::sqrt;
+    switch (basis) {
+      case LineBasis::s: return 2 * sqrt(w) - 1;
+      default: return 1 - 2 * w;
+    }
+  }
+  /// w = 1 - t^2 at the expansion variable v.
+  static Real one_minus_t2_at(LineBasis basis, Real v) {
+    switch (basis) {
+      case LineBasis::s: { const Real h = (1 + v) / 2; return h * h; }
+      default: return (1 - v) / 2;
+    }
+  }
+  /// a / (a_ref sqrt(1 - t^2)) at the ends y = +-l.
+  Real end_factor() const {
+    using std::exp;
+    return exp(chebyshev(alpha, coordinate(basis, Real(0))));
+  }
 
   /// sum c_k T_k(u) by Clenshaw's recurrence.
   static Real chebyshev(const std::vector<Real>& c, Real u) {
@@ -34,20 +63,47 @@ struct LineShape {
     return c.empty() ? Real(0) : u * b1 - b2 + c[0];
   }
 
+  /// Chebyshev coefficients (m of them) of g(w(v)) interpolated at the zeros of T_m in v.
+  template <class G>
+  static std::vector<Real> interpolate(LineBasis to, int m, const G& g) {
+    using std::cos;
+    const Real pi = boost::math::constants::pi<Real>();
+    std::vector<Real> values(m), c(m, Real(0));
+    for (int i = 0; i < m; ++i)
+      values[i] = g(one_minus_t2_at(to, cos(pi * Real(2 * i + 1) / Real(2 * m))));
+    for (int k = 0; k < m; ++k) {
+      Real sum = 0;
+      for (int i = 0; i < m; ++i) sum += values[i] * cos(pi * Real(k) * Real(2 * i + 1) / Real(2 * m));
+      c[k] = sum * (k == 0 ? Real(1) : Real(2)) / Real(m);
+    }
+    return c;
+  }
+
   /// 1 - t^2 from y without cancellation near the ends: (l - y)(l + y)/l^2.
   Real one_minus_t2(Real y) const { return ((l - y) / l) * ((l + y) / l); }
 
   /// a(y) for |y| <= l.
-  Real a(Real y) const {
+  Real a(Real y) const { return a_at(one_minus_t2(y)); }
+  /// a at w = 1 - t^2 in [0, 1].
+  Real a_at(Real w) const {
     using std::exp;
     using std::sqrt;
-    const Real w = one_minus_t2(y);
     if (!(w > 0)) return Real(0);
-    return a_ref * sqrt(w) * exp(chebyshev(alpha, Real(1 - 2 * w)));
+    return a_ref * sqrt(w) * exp(chebyshev(alpha, coordinate(basis, w)));
+  }
+  /// b at w = 1 - t^2 in [0, 1].
+  Real b_at(Real w) const { return a_ref * chebyshev(beta, coordinate(basis, w > 0 ? w : Real(0))); }
+
+  /// The same a(y), b(y) (and l) expanded in `to` with n coefficients for ln a and n + 1 for b,
+  /// by Chebyshev interpolation at the zeros of T_n and T_{n+1} in the new variable.
+  LineShape reexpanded(LineBasis to, int n) const {
+    LineShape out{a_ref, l, interpolate(to, n, [&](Real w) { return chebyshev(alpha, coordinate(basis, w)); }),
+                  interpolate(to, n + 1, [&](Real w) { return b_at(w) / a_ref; }), to};
+    return out;
   }
 
   /// b(y) for |y| <= l.
-  Real b(Real y) const { return a_ref * chebyshev(beta, Real(1 - 2 * one_minus_t2(y))); }
+  Real b(Real y) const { return b_at(one_minus_t2(y)); }
 };
 
 /// The strip functions at one y: G of Eq. (36), F0 of Eq. (33), Q of Eq. (46).

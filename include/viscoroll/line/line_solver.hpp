@@ -61,6 +61,8 @@ struct LineOptions {
   int max_iterations = 100;
   /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
   LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
+  /// Expansion variable of a(y), b(y).
+  LineBasis basis = LineBasis::t_squared;
 
   void validate() const {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
@@ -165,7 +167,7 @@ class LineSolver {
     const Real f = material_.creep_ratio();
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
     return LineResidual<Real, Quadrature>(problem(scene, slow, f, scene.speed * material_.relaxation_time()),
-                                          options_.terms, options_.leading_edge);
+                                          options_.terms, options_.leading_edge, options_.basis);
   }
 
  private:
@@ -186,31 +188,81 @@ class LineSolver {
     return sol;
   }
 
+  /// Terms of the continuation stages that lead to `terms`: 2, 3, 4, 6, 8, 12, 16, 24, ... below
+  /// it, then `terms` itself (docs/line-solver.md, "Continuation in N").
+  static std::vector<int> continuation_stages(int terms) {
+    std::vector<int> stages;
+    for (int n : {2, 3, 4, 6, 8, 12, 16, 24, 32, 48})
+      if (n < terms) stages.push_back(n);
+    stages.push_back(terms);
+    return stages;
+  }
+
+  /// The outcome of one Levenberg-Marquardt run.
+  struct Outcome {
+    bool converged = false;
+    bool undefined = false;  ///< the Jacobian could not be evaluated (left the equations' domain)
+    std::string reason = "iteration limit";
+    int iterations = 0;
+  };
+
   Solution rolling(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
                    Real f, Real vtau, const Solution* start) const {
-    using std::abs;
     using std::log;
     using std::pow;
-    using std::sqrt;
-    const LineResidual<Real, Quadrature> res(problem(scene, slow, f, vtau), options_.terms,
-                                             options_.leading_edge);
-    const int n = res.unknowns();
-    Vector x;
+    const LineProblem<Real> prob = problem(scene, slow, f, vtau);
+    LineShape<Real> shape;
+    Real d;
+    std::vector<int> stages;
     if (start != nullptr && start->shape.alpha.size() > 0) {
-      x = res.pack(start->shape, start->d);
+      // A solution of a nearby scene: straight to the requested discretisation.
+      shape = start->shape;
+      d = start->d;
+      stages = {options_.terms};
     } else {
-      // Seed: the static contact shrunk and shifted as the plane solution at the same V tau/a0.
+      // Seed: the static contact shrunk and shifted as the plane solution at the same V tau/a0,
+      // then continuation in N from two terms up: each stage starts from the previous solution,
+      // which keeps the iteration on the branch of smooth solutions (a cold start at large N can
+      // land on another root of the discrete equations, docs/line-solver.md).
       const PlaneSolver<Real, Material> plane(material_);
       const Real w_plane = scene.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * c);  // plane a0 = slow.a0
       const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
       const Real ratio = pow(ps.a / slow.a0, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
-      LineShape<Real> s{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b / slow.a0}};
-      x = res.pack(s, slow.d * ratio * ratio);
+      shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b / slow.a0}};
+      d = slow.d * ratio * ratio;
+      stages = continuation_stages(options_.terms);
     }
-    Vector r(res.equations());
-    if (!res(x, r)) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
-    if (!res(x, r)) return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain", 0);
+    Outcome total;
+    for (std::size_t k = 0; k < stages.size(); ++k) {
+      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge, options_.basis);
+      Vector x = res.pack(shape, d);
+      Vector r(res.equations());
+      if (!res(x, r)) {
+        if (k == 0) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
+        if (!res(x, r))
+          return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain", total.iterations);
+      }
+      const Outcome out = iterate(res, x, r);
+      total.iterations += out.iterations;
+      if (out.undefined) return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", total.iterations);
+      shape = res.shape(x);
+      d = res.penetration(x);
+      // An intermediate stage that stops short still seeds the next one; only the last decides.
+      if (k + 1 == stages.size())
+        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason, total.iterations);
+    }
+    return failure(scene, slow, c, f, vtau,
+                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge, options_.basis),
+                   Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
+  }
 
+  /// Levenberg-Marquardt with Marquardt's diagonal scaling and a forward-difference Jacobian, from
+  /// x (with r = res(x)); x and r hold the last accepted iterate on return.
+  Outcome iterate(const LineResidual<Real, Quadrature>& res, Vector& x, Vector& r) const {
+    using std::abs;
+    using std::pow;
+    using std::sqrt;
+    const int n = res.unknowns();
     const Real eps = std::numeric_limits<Real>::epsilon();
     const Real step_tol = pow(eps, Real(0.6));
     const Real residual_tol = 64 * sqrt(eps);
@@ -218,18 +270,19 @@ class LineSolver {
     Real mu = Real(1e-3);
     Matrix jac(res.equations(), n);
     Vector trial(n), rt(res.equations());
-    int it = 0;
-    std::string reason = "iteration limit";
-    bool converged = false;
-    for (; it < options_.max_iterations; ++it) {
-      // Forward-difference Jacobian.
+    Outcome out;
+    for (; out.iterations < options_.max_iterations; ++out.iterations) {
       for (int j = 0; j < n; ++j) {
         const Real h = sqrt(eps) * std::max(Real(1), Real(abs(x[j])));
         trial = x;
         trial[j] += h;
         if (!res(trial, rt)) {
           trial[j] = x[j] - h;
-          if (!res(trial, rt)) return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", it);
+          if (!res(trial, rt)) {
+            out.undefined = true;
+            out.reason = "Jacobian undefined";
+            return out;
+          }
           jac.col(j) = (r - rt) / h;
         } else {
           jac.col(j) = (rt - r) / h;
@@ -259,24 +312,24 @@ class LineSolver {
         mu *= 8;
       }
       if (!accepted) {
-        reason = "no descent step (Levenberg-Marquardt damping exhausted)";
-        break;
+        out.reason = "no descent step (Levenberg-Marquardt damping exhausted)";
+        return out;
       }
       const Real rmax = r.cwiseAbs().maxCoeff();
       if (step.cwiseAbs().maxCoeff() <= step_tol * (1 + x.cwiseAbs().maxCoeff()) && rmax <= residual_tol) {
-        converged = true;
-        reason = "converged";
-        ++it;
-        break;
+        out.converged = true;
+        out.reason = "converged";
+        ++out.iterations;
+        return out;
       }
       if (rmax <= 4 * eps) {
-        converged = true;
-        reason = "converged (residual at rounding level)";
-        ++it;
-        break;
+        out.converged = true;
+        out.reason = "converged (residual at rounding level)";
+        ++out.iterations;
+        return out;
       }
     }
-    return make(scene, slow, c, f, vtau, res, x, r, converged, reason, it);
+    return out;
   }
 
   Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
