@@ -4,6 +4,7 @@
 // grid-converged to 0.1% in under 10 s on one core; docs/bem.md shows that N = 16 is (d and chi
 // within 0.05% of N = 64). Counters: d, chi, a(0), active-set and GMRES iterations.
 #include <benchmark/benchmark.h>
+
 #include <cmath>
 #include <viscoroll/bem/bem_solver.hpp>
 
@@ -14,7 +15,8 @@ void BM_bem_paper_scene(benchmark::State& state) {
   viscoroll::BemOptions o;
   o.grid = static_cast<int>(state.range(0));
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
-  const viscoroll::BemScene<double> scene{1.0, (std::log(20.0) - 1) / 25, 5.0 / (3 * (1 + f) * c), 1.0};
+  const viscoroll::BemScene<double> scene{1.0, (std::log(20.0) - 1) / 25, 5.0 / (3 * (1 + f) * c),
+                                          1.0};
   viscoroll::BemSolution<double> s;
   for (auto _ : state) {
     s = solver.solve(scene);
@@ -33,4 +35,11 @@ void BM_bem_paper_scene(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_bem_paper_scene)->Arg(8)->Arg(12)->Arg(16)->Arg(24)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_bem_paper_scene)
+    ->Arg(8)
+    ->Arg(12)
+    ->Arg(16)
+    ->Arg(24)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

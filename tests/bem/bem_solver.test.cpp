@@ -41,7 +41,8 @@ struct Errors {
   double a, l, d;
 };
 
-Errors hertz_errors(const viscoroll::BemSolution<double>& s, const viscoroll::bem::HertzContact<double>& h) {
+Errors hertz_errors(const viscoroll::BemSolution<double>& s,
+                    const viscoroll::bem::HertzContact<double>& h) {
   return {std::abs(s.a0 - h.a), std::abs(s.l - h.b), std::abs(s.d - h.d) / h.d};
 }
 
@@ -95,7 +96,8 @@ TEST_CASE("bem: an elastic half space is Hertz", "[bem]") {
   o.grid = 8;
   const BemSolver<double, viscoroll::Elastic<double>> s(viscoroll::Elastic<double>(1.0, 0.3), o);
   const auto sol = s.solve(BemScene<double>{1.0, 0.5, 2.0, 3.0});
-  const auto h = hertz_contact(1.0, 0.5, viscoroll::Elastic<double>(1.0, 0.3).instantaneous_compliance(), 2.0);
+  const auto h =
+      hertz_contact(1.0, 0.5, viscoroll::Elastic<double>(1.0, 0.3).instantaneous_compliance(), 2.0);
   REQUIRE(sol.converged);
   const double ha = sol.grid.hx / h.a;
   CHECK(std::abs(sol.d - h.d) / h.d <= ha * ha / 5);
@@ -187,13 +189,15 @@ TEMPLATE_TEST_CASE("bem: float, double and long double agree", "[bem]", float, l
   BemOptions o;
   o.grid = 4;
   const auto ref = solver(4).solve(BemScene<double>{1.0, c2_paper, load_paper, 1.0});
-  const BemSolver<Real, StandardLinearSolid<Real>> s(StandardLinearSolid<Real>(Real(mu), Real(nu), Real(f), Real(1)), o);
+  const BemSolver<Real, StandardLinearSolid<Real>> s(
+      StandardLinearSolid<Real>(Real(mu), Real(nu), Real(f), Real(1)), o);
   const auto sol = s.solve(BemScene<Real>{Real(1), Real(c2_paper), Real(load_paper), Real(1)});
   REQUIRE(sol.converged);
   REQUIRE(sol.contact_cells == ref.contact_cells);
   // Rounding of the coefficients and of GMRES (tolerance 32 eps) amplified by the condition
   // number of the active-set system (~1e2 on this grid).
-  const double tol = std::max(1e-9, 1e4 * static_cast<double>(std::numeric_limits<Real>::epsilon()));
+  const double tol =
+      std::max(1e-9, 1e4 * static_cast<double>(std::numeric_limits<Real>::epsilon()));
   CHECK(static_cast<double>(sol.d) == Approx(ref.d).epsilon(tol));
   CHECK(static_cast<double>(sol.chi) == Approx(ref.chi).epsilon(tol));
 }
@@ -202,15 +206,18 @@ TEST_CASE("bem: non-convergence is reported, inputs are validated", "[bem]") {
   BemOptions o;
   o.grid = 8;
   o.max_active_set_iterations = 1;
-  const auto s = BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), o).solve(BemScene<double>{1.0, c2_paper, load_paper, 1.0});
+  const auto s = BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), o)
+                     .solve(BemScene<double>{1.0, c2_paper, load_paper, 1.0});
   CHECK_FALSE(s.converged);
   CHECK(s.reason == "active-set iteration limit");
   BemOptions bad;
   bad.grid = 1;
-  CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad), Catch::Contains("grid = 1"));
+  CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad),
+                    Catch::Contains("grid = 1"));
   bad = BemOptions{};
   bad.extent = 1.2;
-  CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad), Catch::Contains("extent = 1.2"));
+  CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad),
+                    Catch::Contains("extent = 1.2"));
   const auto ok = solver(4);
   CHECK_THROWS_WITH(ok.solve(BemScene<double>{1.0, 0.0, 1.0, 1.0}), Catch::Contains("c2 = 0"));
   CHECK_THROWS_WITH(ok.solve(BemScene<double>{1.0, 1.0, 1.0, -1.0}), Catch::Contains("speed = -1"));

@@ -63,7 +63,8 @@ TEST_CASE("bem: Hertz pressure gives S = d - h inside the ellipse (B8a)", "[bem]
   const double c = 0.07, load = 1.7, c1 = 1.0, c2 = 0.25;
   const auto h = hertz_contact(c1, c2, c, load);
   boost::math::quadrature::tanh_sinh<double> rule;
-  for (const auto& pt : {std::pair{0.0, 0.0}, std::pair{0.5 * h.a, 0.3 * h.b}, std::pair{-0.2 * h.a, -0.8 * h.b}}) {
+  for (const auto& pt :
+       {std::pair{0.0, 0.0}, std::pair{0.5 * h.a, 0.3 * h.b}, std::pair{-0.2 * h.a, -0.8 * h.b}}) {
     const double x = pt.first, y = pt.second;
     const auto inner = [&](double theta) {
       const double ct = std::cos(theta), st = std::sin(theta);
@@ -72,7 +73,8 @@ TEST_CASE("bem: Hertz pressure gives S = d - h inside the ellipse (B8a)", "[bem]
       const double qb = 2 * (x * ct / (h.a * h.a) + y * st / (h.b * h.b));
       const double qc = x * x / (h.a * h.a) + y * y / (h.b * h.b) - 1;
       const double rho = (-qb + std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
-      return rule.integrate([&](double r) { return h.pressure(x + r * ct, y + r * st); }, 0.0, rho, 1e-12);
+      return rule.integrate([&](double r) { return h.pressure(x + r * ct, y + r * st); }, 0.0, rho,
+                            1e-12);
     };
     const double u = c * rule.integrate(inner, 0.0, 2 * std::acos(-1.0), 1e-11);
     CHECK(u == Approx(h.d - c1 * x * x / 2 - c2 * y * y / 2).epsilon(1e-9));

@@ -31,8 +31,10 @@ TEMPLATE_TEST_CASE("bem: FFT apply equals the direct sum", "[bem]", float, doubl
     for (std::size_t q = 0; q < p.size(); ++q) scale = std::max(scale, std::abs(direct[q]));
     // FFT rounding: O(eps log(n)) times the largest entry; Eigen's kissfft computes its twiddle
     // factors in double, so a long double transform is accurate to double's eps, not its own.
-    const Real e = std::max(std::numeric_limits<Real>::epsilon(), Real(std::numeric_limits<double>::epsilon()));
-    for (std::size_t q = 0; q < p.size(); ++q) CHECK(std::abs(fast[q] - direct[q]) <= 200 * e * scale);
+    const Real e = std::max(std::numeric_limits<Real>::epsilon(),
+                            Real(std::numeric_limits<double>::epsilon()));
+    for (std::size_t q = 0; q < p.size(); ++q)
+      CHECK(std::abs(fast[q] - direct[q]) <= 200 * e * scale);
   }
 }
 
@@ -68,6 +70,8 @@ TEST_CASE("bem: Prony memory terms add (B10) and one term is the standard linear
   // Creep function (B9): J(0) mu_D = 1, J(inf) mu_D = 1 + sum f_k.
   CHECK(split.creep(0.0) == 1.0);
   CHECK(split.creep(1e6) == Approx(10.0).epsilon(1e-15));
-  CHECK_THROWS_WITH((GeneralizedMaxwell<double>(1.0, 0.3, {{1.0, 1.0}, {-1.0, 1.0}})), Catch::Contains("f[1] = -1"));
-  CHECK_THROWS_WITH((GeneralizedMaxwell<double>(1.0, 0.3, {{1.0, -2.0}})), Catch::Contains("tau[0] = -2"));
+  CHECK_THROWS_WITH((GeneralizedMaxwell<double>(1.0, 0.3, {{1.0, 1.0}, {-1.0, 1.0}})),
+                    Catch::Contains("f[1] = -1"));
+  CHECK_THROWS_WITH((GeneralizedMaxwell<double>(1.0, 0.3, {{1.0, -2.0}})),
+                    Catch::Contains("tau[0] = -2"));
 }

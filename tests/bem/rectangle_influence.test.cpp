@@ -22,14 +22,17 @@ Real eps() {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("bem: self coefficient of a square is 4 h ln(1 + sqrt 2)", "[bem]", float, double, long double) {
+TEMPLATE_TEST_CASE("bem: self coefficient of a square is 4 h ln(1 + sqrt 2)", "[bem]", float,
+                   double, long double) {
   using Real = TestType;
   using std::log;
   using std::sqrt;
   for (const Real h : {Real(0.25), Real(1), Real(3)}) {
     const Real exact = 4 * h * log(1 + sqrt(Real(2)));
-    CHECK(std::abs(rectangle_influence_closed_form(Real(0), Real(0), h, h) - exact) <= 16 * eps<Real>() * exact);
-    CHECK(std::abs(rectangle_influence(Real(0), Real(0), h, h) - exact) <= 16 * eps<Real>() * exact);
+    CHECK(std::abs(rectangle_influence_closed_form(Real(0), Real(0), h, h) - exact) <=
+          16 * eps<Real>() * exact);
+    CHECK(std::abs(rectangle_influence(Real(0), Real(0), h, h) - exact) <=
+          16 * eps<Real>() * exact);
   }
 }
 
@@ -39,34 +42,42 @@ TEST_CASE("bem: coefficients add up to the coefficient of the union (B1)", "[bem
   const double a = 0.7, b = 1.3;
   const int nx = 5, ny = 3;
   const double hx = 2 * a / nx, hy = 2 * b / ny;
-  for (const auto& pt : std::vector<std::pair<double, double>>{{0, 0}, {0.1, 0.2}, {0.9, -1.4}, {3, 1}, {40, -25}, {1e3, 2e3}}) {
+  for (const auto& pt : std::vector<std::pair<double, double>>{
+           {0, 0}, {0.1, 0.2}, {0.9, -1.4}, {3, 1}, {40, -25}, {1e3, 2e3}}) {
     double sum = 0;
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         const double xc = -a + (i + 0.5) * hx, yc = -b + (j + 0.5) * hy;
         sum += rectangle_influence(pt.first - xc, pt.second - yc, hx, hy);
       }
-    const long double big = rectangle_influence_closed_form<long double>(pt.first, pt.second, 2 * a, 2 * b);
+    const long double big =
+        rectangle_influence_closed_form<long double>(pt.first, pt.second, 2 * a, 2 * b);
     // The long-double closed form itself loses (R^2/(4ab)) ln R ulps of long double.
-    CHECK(std::abs(sum - static_cast<double>(big)) <= 2000 * eps<double>() * static_cast<double>(big));
+    CHECK(std::abs(sum - static_cast<double>(big)) <=
+          2000 * eps<double>() * static_cast<double>(big));
   }
 }
 
-TEST_CASE("bem: far-field coefficient (B2) against the closed form and the multipole series", "[bem]") {
+TEST_CASE("bem: far-field coefficient (B2) against the closed form and the multipole series",
+          "[bem]") {
   const double hx = 0.1, hy = 0.5;
   for (double x : {0.0, 0.3, 1.0, 3.0, 10.0})
     for (double y : {0.0, 0.5, 2.0}) {
       // Where (B1) in long double is still exact to ~1e-15, (B2) must agree to ~100 eps.
       const long double ref = rectangle_influence_closed_form<long double>(x, y, hx, hy);
-      CHECK(std::abs(rectangle_influence(x, y, hx, hy) - static_cast<double>(ref)) <= 100 * eps<double>() * static_cast<double>(ref));
+      CHECK(std::abs(rectangle_influence(x, y, hx, hy) - static_cast<double>(ref)) <=
+            100 * eps<double>() * static_cast<double>(ref));
     }
   // At R >= 6e3 h: A/R + A [hx^2 (2X^2 - Y^2) + hy^2 (2Y^2 - X^2)] / (24 R^5), remainder
   // O((h/R)^4) < 1e-15 relative.
   for (double x : {1e4, 3e3})
     for (double y : {0.0, 7e3}) {
       const double r = std::hypot(x, y), area = hx * hy;
-      const double multipole = area / r + area * (hx * hx * (2 * x * x - y * y) + hy * hy * (2 * y * y - x * x)) / (24 * std::pow(r, 5));
-      CHECK(std::abs(rectangle_influence(x, y, hx, hy) - multipole) <= 100 * eps<double>() * multipole);
+      const double multipole =
+          area / r + area * (hx * hx * (2 * x * x - y * y) + hy * hy * (2 * y * y - x * x)) /
+                         (24 * std::pow(r, 5));
+      CHECK(std::abs(rectangle_influence(x, y, hx, hy) - multipole) <=
+            100 * eps<double>() * multipole);
     }
 }
 
@@ -87,9 +98,11 @@ double memory_brute_force(double x, double y, double hx, double hy, double lengt
   std::sort(breaks.begin(), breaks.end());
   long double s = 0;
   const long double tol = 1e-17L;
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) s += rule.integrate(g, breaks[k], breaks[k + 1], tol);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+    s += rule.integrate(g, breaks[k], breaks[k + 1], tol);
   long double a = breaks.back();
-  long double step = std::min<long double>(1, std::max<long double>(1e-4L, (std::abs(x) + hx) / length));
+  long double step =
+      std::min<long double>(1, std::max<long double>(1e-4L, (std::abs(x) + hx) / length));
   while (a < 60) {
     const long double b = std::min<long double>(a + step, 60);
     s += rule.integrate(g, a, b, tol);
@@ -128,7 +141,9 @@ TEST_CASE("bem: memory coefficient limits", "[bem]") {
   const auto near = memory_row<double>(m, 0.2, hx, hy, small);
   for (int i = -m; i <= m; ++i) {
     const double x = i * hx, h = 1e-4;
-    const double slope = (rectangle_influence(x + h, 0.2, hx, hy) - rectangle_influence(x - h, 0.2, hx, hy)) / (2 * h);
+    const double slope =
+        (rectangle_influence(x + h, 0.2, hx, hy) - rectangle_influence(x - h, 0.2, hx, hy)) /
+        (2 * h);
     const double k = rectangle_influence(x, 0.2, hx, hy);
     CHECK(std::abs(near[static_cast<std::size_t>(i + m)] - (k + small * slope)) <= 1e-10 * k);
   }

@@ -54,12 +54,15 @@ struct BemScene {
   void validate() const {
     detail::require_positive("c1", c1);
     detail::require_positive("c2", c2);
-    detail::require(c2 / c1 >= Real(1e-10) && c2 / c1 <= Real(1e10), "c2/c1", c2 / c1, "1e-10 <= c2/c1 <= 1e10");
+    detail::require(c2 / c1 >= Real(1e-10) && c2 / c1 <= Real(1e10), "c2/c1", c2 / c1,
+                    "1e-10 <= c2/c1 <= 1e10");
     detail::require_positive("load", load);
     detail::require_non_negative("speed", speed);
   }
 
-  Real gap_profile(Real x, Real y) const { return profile ? profile(x, y) : c1 * x * x / 2 + c2 * y * y / 2; }
+  Real gap_profile(Real x, Real y) const {
+    return profile ? profile(x, y) : c1 * x * x / 2 + c2 * y * y / 2;
+  }
 };
 
 /// Runtime settings of the boundary-element solver.
@@ -81,11 +84,14 @@ struct BemOptions {
   void validate() const {
     detail::require(grid >= 2 && grid <= 4096, "grid", grid, "2 <= grid <= 4096");
     detail::require(extent >= 1.6 && extent <= 64, "extent", extent, "1.6 <= extent <= 64");
-    detail::require(tolerance >= 1e-15 && tolerance <= 1e-3, "tolerance", tolerance, "1e-15 <= tolerance <= 1e-3");
+    detail::require(tolerance >= 1e-15 && tolerance <= 1e-3, "tolerance", tolerance,
+                    "1e-15 <= tolerance <= 1e-3");
     detail::require(max_active_set_iterations >= 1 && max_active_set_iterations <= 100000,
-                    "max_active_set_iterations", max_active_set_iterations, "1 <= max_active_set_iterations <= 100000");
-    detail::require(max_krylov_iterations >= 1 && max_krylov_iterations <= 10000000, "max_krylov_iterations",
-                    max_krylov_iterations, "1 <= max_krylov_iterations <= 10000000");
+                    "max_active_set_iterations", max_active_set_iterations,
+                    "1 <= max_active_set_iterations <= 100000");
+    detail::require(max_krylov_iterations >= 1 && max_krylov_iterations <= 10000000,
+                    "max_krylov_iterations", max_krylov_iterations,
+                    "1 <= max_krylov_iterations <= 10000000");
     detail::require(restart >= 2 && restart <= 1000, "restart", restart, "2 <= restart <= 1000");
   }
 };
@@ -95,22 +101,22 @@ template <RealScalar Real>
 struct BemSolution {
   bem::BemGrid<Real> grid;
   std::vector<Real> pressure;  ///< cell pressures, flat index i + nx j (grid.index)
-  std::vector<Real> gap;       ///< g = u - d + h at the cell centres (0 in contact to the tolerance)
-  Real d;                      ///< penetration (Eq. 27)
-  Real a0;                     ///< a(0): half width of the contact on y = 0 (B12, sub-cell)
-  Real b0;                     ///< b(0): offset of its centre ahead of the roller (Eq. 29)
-  Real l;                      ///< half length of the contact (B12, sub-cell)
-  Real chi;                    ///< rolling friction C1 int x p / int p (Eq. 51)
-  Real load;                   ///< hx hy sum p (equals the scene's load to the tolerance)
+  std::vector<Real> gap;  ///< g = u - d + h at the cell centres (0 in contact to the tolerance)
+  Real d;                 ///< penetration (Eq. 27)
+  Real a0;                ///< a(0): half width of the contact on y = 0 (B12, sub-cell)
+  Real b0;                ///< b(0): offset of its centre ahead of the roller (Eq. 29)
+  Real l;                 ///< half length of the contact (B12, sub-cell)
+  Real chi;               ///< rolling friction C1 int x p / int p (Eq. 51)
+  Real load;              ///< hx hy sum p (equals the scene's load to the tolerance)
   bem::HertzContact<Real> long_term;  ///< the static Hertz contact of the long-term compliance
   int contact_cells;
   bool converged;
   std::string reason;
-  int iterations;          ///< active-set iterations
-  int krylov_iterations;   ///< GMRES steps over all active-set iterations
-  Real residual;           ///< max complementarity violation relative to d (B11)
-  double seconds_setup;    ///< influence table and its transform
-  double seconds_solve;    ///< active-set iteration
+  int iterations;         ///< active-set iterations
+  int krylov_iterations;  ///< GMRES steps over all active-set iterations
+  Real residual;          ///< max complementarity violation relative to d (B11)
+  double seconds_setup;   ///< influence table and its transform
+  double seconds_solve;   ///< active-set iteration
 
   Real p(int i, int j) const { return pressure[grid.index(i, j)]; }
 };
@@ -118,7 +124,7 @@ struct BemSolution {
 /// Boundary-element solver over a scalar and a material (a ConstitutiveModel such as
 /// StandardLinearSolid or Elastic, or a PronySeriesModel such as GeneralizedMaxwell).
 template <RealScalar Real, bem::MemoryModel Material>
-  requires std::same_as<typename Material::real_type, Real>
+requires std::same_as<typename Material::real_type, Real>
 class BemSolver {
  public:
   using Solution = BemSolution<Real>;
@@ -165,7 +171,8 @@ class BemSolver {
 
   bem::HertzContact<Real> long_term_hertz(const BemScene<Real>& scene) const {
     scene.validate();
-    return bem::hertz_contact(scene.c1, scene.c2, (1 + material_.creep_ratio()) * material_.instantaneous_compliance(),
+    return bem::hertz_contact(scene.c1, scene.c2,
+                              (1 + material_.creep_ratio()) * material_.instantaneous_compliance(),
                               scene.load);
   }
 
@@ -173,8 +180,11 @@ class BemSolver {
   /// (B11): the inverse continuum symbol |k| / (2 pi c (1 + sum f_k / (1 - i k_x V tau_k))) on
   /// the padded grid, |k| the discrete (finite-difference) wavenumber; the zero mode gets the
   /// value of the lowest non-zero one.
-  static std::vector<Complex> preconditioner_symbol(const bem::BemGrid<Real>& grid, const bem::ConvolutionOperator<Real>& op,
-                                                    Real c, const std::vector<PronyTerm<Real>>& terms, Real speed) {
+  static std::vector<Complex> preconditioner_symbol(const bem::BemGrid<Real>& grid,
+                                                    const bem::ConvolutionOperator<Real>& op,
+                                                    Real c,
+                                                    const std::vector<PronyTerm<Real>>& terms,
+                                                    Real speed) {
     using std::sin;
     using std::sqrt;
     const Real pi = boost::math::constants::pi<Real>();
@@ -184,32 +194,37 @@ class BemSolver {
     for (int n = 0; n < nfy; ++n)
       for (int m = 0; m < nfx; ++m) {
         const int mm = m <= nfx / 2 ? m : m - nfx, nn = n <= nfy / 2 ? n : n - nfy;
-        const Real kx = 2 * pi * Real(mm) / (Real(nfx) * grid.hx), ky = 2 * pi * Real(nn) / (Real(nfy) * grid.hy);
-        const Real qx = 2 * sin(kx * grid.hx / 2) / grid.hx, qy = 2 * sin(ky * grid.hy / 2) / grid.hy;
+        const Real kx = 2 * pi * Real(mm) / (Real(nfx) * grid.hx),
+                   ky = 2 * pi * Real(nn) / (Real(nfy) * grid.hy);
+        const Real qx = 2 * sin(kx * grid.hx / 2) / grid.hx,
+                   qy = 2 * sin(ky * grid.hy / 2) / grid.hy;
         const Real k = std::max(sqrt(qx * qx + qy * qy), kmin);
         Complex memory(1);
         for (const auto& t : terms) memory += t.f / Complex(1, -kx * speed * t.tau);
-        s[static_cast<std::size_t>(m) + static_cast<std::size_t>(nfx) * static_cast<std::size_t>(n)] =
-            k / (2 * pi * c * memory);
+        s[static_cast<std::size_t>(m) +
+          static_cast<std::size_t>(nfx) * static_cast<std::size_t>(n)] = k / (2 * pi * c * memory);
       }
     return s;
   }
 
-  Solution iterate(const BemScene<Real>& scene, const bem::BemGrid<Real>& grid, const bem::HertzContact<Real>& hertz,
-                   const bem::ConvolutionOperator<Real>& op, const std::vector<Complex>& symbol,
-                   const std::vector<PronyTerm<Real>>& terms, const Solution* start) const {
+  Solution iterate(const BemScene<Real>& scene, const bem::BemGrid<Real>& grid,
+                   const bem::HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
+                   const std::vector<Complex>& symbol, const std::vector<PronyTerm<Real>>& terms,
+                   const Solution* start) const {
     using std::abs;
     const std::size_t n = grid.size();
     std::vector<Real> h(n), p(n, Real(0)), u(n), full(n), tmp(n);
     for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i) h[grid.index(i, j)] = scene.gap_profile(grid.x(i), grid.y(j));
+      for (int i = 0; i < grid.nx; ++i)
+        h[grid.index(i, j)] = scene.gap_profile(grid.x(i), grid.y(j));
     const Real area = grid.hx * grid.hy;
     const Real d_ref = hertz.d;
     // Initial active set: the start's contact, or the Hertz ellipse of an effective compliance
     // between the long-term (V tau = 0) and the instantaneous (V tau -> inf) one.
     std::vector<char> active(n, 0);
     Real d = hertz.d;
-    if (start != nullptr && start->grid.nx == grid.nx && start->grid.ny == grid.ny && start->pressure.size() == n) {
+    if (start != nullptr && start->grid.nx == grid.nx && start->grid.ny == grid.ny &&
+        start->pressure.size() == n) {
       for (std::size_t q = 0; q < n; ++q) {
         active[q] = start->pressure[q] > 0;
         p[q] = start->pressure[q] * scene.load / start->load;
@@ -222,8 +237,8 @@ class BemSolver {
         weight += t.f * hertz.a / (hertz.a + vt);
         f_total += t.f;
       }
-      const auto guess = bem::hertz_contact(scene.c1, scene.c2, (1 + weight) * material_.instantaneous_compliance(),
-                                            scene.load);
+      const auto guess = bem::hertz_contact(
+          scene.c1, scene.c2, (1 + weight) * material_.instantaneous_compliance(), scene.load);
       (void)f_total;
       for (int j = 0; j < grid.ny; ++j)
         for (int i = 0; i < grid.nx; ++i) {
@@ -294,7 +309,8 @@ class BemSolver {
       d = x[na];
       if (!rep.converged) {
         gmres_ok = false;
-        reason = "GMRES did not converge (relative residual " + std::to_string(rep.relative_residual) + ")";
+        reason = "GMRES did not converge (relative residual " +
+                 std::to_string(rep.relative_residual) + ")";
         ++iterations;
         break;
       }
@@ -379,8 +395,12 @@ class BemSolver {
     int lead = imax, trail = imax;
     while (lead + 1 < g.nx && sol.p(lead + 1, j0) > 0) ++lead;
     while (trail > 0 && sol.p(trail - 1, j0) > 0) --trail;
-    const Real xl = g.x(lead) + g.hx * (lead > trail ? edge_offset(sol.p(lead, j0), sol.p(lead - 1, j0)) : Real(1) / 2);
-    const Real xt = g.x(trail) - g.hx * (lead > trail ? edge_offset(sol.p(trail, j0), sol.p(trail + 1, j0)) : Real(1) / 2);
+    const Real xl =
+        g.x(lead) +
+        g.hx * (lead > trail ? edge_offset(sol.p(lead, j0), sol.p(lead - 1, j0)) : Real(1) / 2);
+    const Real xt =
+        g.x(trail) -
+        g.hx * (lead > trail ? edge_offset(sol.p(trail, j0), sol.p(trail + 1, j0)) : Real(1) / 2);
     sol.a0 = (xl - xt) / 2;
     sol.b0 = (xl + xt) / 2;
     // l: the row loads F0(y_j) = hx sum_i p vanish linearly in y^2 at an elliptic tip (exactly
@@ -389,13 +409,16 @@ class BemSolver {
     int top = j0;
     for (int j = j0; j < g.ny; ++j) {
       for (int i = 0; i < g.nx; ++i) row[static_cast<std::size_t>(j)] += sol.p(i, j);
-      if (row[static_cast<std::size_t>(j)] > 0) top = j;
-      else break;
+      if (row[static_cast<std::size_t>(j)] > 0)
+        top = j;
+      else
+        break;
     }
     Real l = g.y(top) + g.hy / 2;
     if (top - 1 > j0) {
       const Real y1 = g.y(top - 1), y2 = g.y(top);
-      const Real f1 = row[static_cast<std::size_t>(top - 1)], f2 = row[static_cast<std::size_t>(top)];
+      const Real f1 = row[static_cast<std::size_t>(top - 1)],
+                 f2 = row[static_cast<std::size_t>(top)];
       if (f1 > f2) {
         using std::sqrt;
         const Real l2 = y2 * y2 + f2 * (y2 * y2 - y1 * y1) / (f1 - f2);

@@ -91,7 +91,8 @@ HertzContact<Real> hertz_contact(Real c1, Real c2, Real compliance, Real load) {
     Real lo = Real(1e-6), hi = Real(1) - 16 * std::numeric_limits<Real>::epsilon();
     std::uintmax_t iterations = 300;
     const auto bracket = boost::math::tools::toms748_solve(
-        g, lo, hi, boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3), iterations);
+        g, lo, hi, boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3),
+        iterations);
     const Real kp = (bracket.first + bracket.second) / 2;
     const Real e2 = (1 - kp) * (1 + kp), e = sqrt(e2);
     const Real k = ellint_1(e), E = ellint_2(e);

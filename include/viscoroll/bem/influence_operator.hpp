@@ -1,5 +1,6 @@
 // viscoroll: the boundary-element operator of the 3-D reference solver, a 2-D convolution of the
-// cell pressures with the viscoelastic influence coefficients, applied by FFT on a zero-padded grid.
+// cell pressures with the viscoelastic influence coefficients, applied by FFT on a zero-padded
+// grid.
 //
 // On a uniform grid of nx x ny rectangles hx x hy with cell centres (x_i, y_j), the displacement
 // at cell centre (i, j) due to constant pressures p_kl is (docs/bem.md, (B6))
@@ -38,7 +39,8 @@ std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
       for (const auto& t : m.memory_terms())
         if (t.f > 0) terms.push_back(PronyTerm<Real>{t.f, t.tau});
     } else {
-      if (m.creep_ratio() > 0) terms.push_back(PronyTerm<Real>{m.creep_ratio(), m.relaxation_time()});
+      if (m.creep_ratio() > 0)
+        terms.push_back(PronyTerm<Real>{m.creep_ratio(), m.relaxation_time()});
     }
   }
   return terms;
@@ -65,15 +67,19 @@ struct BemGrid {
 template <RealScalar Real>
 class InfluenceTable {
  public:
-  InfluenceTable(const BemGrid<Real>& grid, Real compliance, const std::vector<PronyTerm<Real>>& terms, Real speed)
-      : nx_(grid.nx), ny_(grid.ny), k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)) {
+  InfluenceTable(const BemGrid<Real>& grid, Real compliance,
+                 const std::vector<PronyTerm<Real>>& terms, Real speed)
+      : nx_(grid.nx),
+        ny_(grid.ny),
+        k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)) {
     using W = coefficient_real_t<Real>;
     const int m = nx_ - 1;
     const W hx = W(grid.hx), hy = W(grid.hy);
     for (int j = 0; j < ny_; ++j) {
       const W y = W(j) * hy;
       std::vector<W> row(static_cast<std::size_t>(2 * m + 1));
-      for (int i = -m; i <= m; ++i) row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
+      for (int i = -m; i <= m; ++i)
+        row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
       std::vector<W> total = row;
       for (const auto& t : terms) {
         const W length = W(speed) * W(t.tau);
@@ -82,7 +88,8 @@ class InfluenceTable {
         for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
       }
       for (int i = -m; i <= m; ++i)
-        k_[static_cast<std::size_t>(i + m) + static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
+        k_[static_cast<std::size_t>(i + m) +
+           static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
             Real(W(compliance) * total[static_cast<std::size_t>(i + m)]);
     }
   }
@@ -91,7 +98,8 @@ class InfluenceTable {
   /// pressure on cell (k, l).
   Real operator()(int di, int dj) const {
     const int j = dj < 0 ? -dj : dj;
-    return k_[static_cast<std::size_t>(di + nx_ - 1) + static_cast<std::size_t>(2 * nx_ - 1) * static_cast<std::size_t>(j)];
+    return k_[static_cast<std::size_t>(di + nx_ - 1) +
+              static_cast<std::size_t>(2 * nx_ - 1) * static_cast<std::size_t>(j)];
   }
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -124,10 +132,16 @@ class ConvolutionOperator {
   using Complex = std::complex<Real>;
 
   explicit ConvolutionOperator(const InfluenceTable<Real>& table)
-      : nx_(table.nx()), ny_(table.ny()), nfx_(detail::fft_size(2 * table.nx() - 1)),
-        nfy_(detail::fft_size(2 * table.ny() - 1)), kernel_(static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(nfy_)),
-        work_(kernel_.size()), line_x_(static_cast<std::size_t>(nfx_)), line_y_(static_cast<std::size_t>(nfy_)),
-        out_x_(static_cast<std::size_t>(nfx_)), out_y_(static_cast<std::size_t>(nfy_)) {
+      : nx_(table.nx()),
+        ny_(table.ny()),
+        nfx_(detail::fft_size(2 * table.nx() - 1)),
+        nfy_(detail::fft_size(2 * table.ny() - 1)),
+        kernel_(static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(nfy_)),
+        work_(kernel_.size()),
+        line_x_(static_cast<std::size_t>(nfx_)),
+        line_y_(static_cast<std::size_t>(nfy_)),
+        out_x_(static_cast<std::size_t>(nfx_)),
+        out_y_(static_cast<std::size_t>(nfy_)) {
     std::fill(work_.begin(), work_.end(), Complex(0));
     for (int dj = -(ny_ - 1); dj <= ny_ - 1; ++dj)
       for (int di = -(nx_ - 1); di <= nx_ - 1; ++di)
@@ -146,12 +160,14 @@ class ConvolutionOperator {
   void apply(const In& p, Out& u) const {
     std::fill(work_.begin(), work_.end(), Complex(0));
     for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i) work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
+      for (int i = 0; i < nx_; ++i)
+        work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
     transform(work_, ny_, false);
     for (std::size_t q = 0; q < work_.size(); ++q) work_[q] *= kernel_[q];
     transform(work_, ny_, true);
     for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i) u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
+      for (int i = 0; i < nx_; ++i)
+        u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
   }
 
   /// Multiplies the padded spectrum of p by `symbol` (nfx nfy values, index m + nfx n) instead of
@@ -160,17 +176,20 @@ class ConvolutionOperator {
   void apply_symbol(const std::vector<Complex>& symbol, const In& p, Out& u) const {
     std::fill(work_.begin(), work_.end(), Complex(0));
     for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i) work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
+      for (int i = 0; i < nx_; ++i)
+        work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
     transform(work_, ny_, false);
     for (std::size_t q = 0; q < work_.size(); ++q) work_[q] *= symbol[q];
     transform(work_, ny_, true);
     for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i) u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
+      for (int i = 0; i < nx_; ++i)
+        u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
   }
 
  private:
   std::size_t at(int i, int j) const {
-    return static_cast<std::size_t>(i) + static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(j);
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(j);
   }
 
   /// 2-D transform of the padded array; only the first `rows` rows are non-zero on input of the
@@ -215,7 +234,8 @@ void apply_direct(const InfluenceTable<Real>& table, const In& p, Out& u) {
     for (int i = 0; i < nx; ++i) {
       Real s = 0;
       for (int l = 0; l < ny; ++l)
-        for (int k = 0; k < nx; ++k) s += table(i - k, j - l) * p[static_cast<std::size_t>(k + nx * l)];
+        for (int k = 0; k < nx; ++k)
+          s += table(i - k, j - l) * p[static_cast<std::size_t>(k + nx * l)];
       u[static_cast<std::size_t>(i + nx * j)] = s;
     }
 }

@@ -30,7 +30,8 @@ namespace viscoroll::bem {
 /// needs more than float's 24 bits), Real itself when it is wider.
 template <class Real>
 using coefficient_real_t =
-    std::conditional_t<(std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits), double, Real>;
+    std::conditional_t<(std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits),
+                       double, Real>;
 
 /// (B1): the primitive F(u, v) = u asinh(v/|u|) + v asinh(u/|v|) of 1/sqrt(u^2 + v^2).
 template <RealScalar Real>
@@ -48,7 +49,8 @@ Real love_primitive(Real u, Real v) {
 template <RealScalar Real>
 Real rectangle_influence_closed_form(Real x, Real y, Real hx, Real hy) {
   const Real x1 = x - hx / 2, x2 = x + hx / 2, y1 = y - hy / 2, y2 = y + hy / 2;
-  return love_primitive(x2, y2) - love_primitive(x1, y2) - love_primitive(x2, y1) + love_primitive(x1, y1);
+  return love_primitive(x2, y2) - love_primitive(x1, y2) - love_primitive(x2, y1) +
+         love_primitive(x1, y1);
 }
 
 namespace detail {
@@ -105,13 +107,15 @@ Real rectangle_influence(Real x, Real y, Real hx, Real hy) {
   // (B2): the integrand's singularities lie at distance >= dmin + h/2 from each panel's centre.
   const int nx = detail::gauss_points_needed<Real>((dmin + hx / 2) / (hx / 2));
   const int ny = detail::gauss_points_needed<Real>((dmin + hy / 2) / (hy / 2));
-  return detail::gauss_sum_n<Real>(nx, [&](Real sx) {
-           const Real u = x - sx * hx / 2;
-           return detail::gauss_sum_n<Real>(ny, [&](Real sy) {
-             const Real v = y - sy * hy / 2;
-             return 1 / sqrt(u * u + v * v);
-           });
-         }) * (hx * hy / 4);
+  return detail::gauss_sum_n<Real>(nx,
+                                   [&](Real sx) {
+                                     const Real u = x - sx * hx / 2;
+                                     return detail::gauss_sum_n<Real>(ny, [&](Real sy) {
+                                       const Real v = y - sy * hy / 2;
+                                       return 1 / sqrt(u * u + v * v);
+                                     });
+                                   }) *
+         (hx * hy / 4);
 }
 
 /// (B4), (B5): the memory coefficients M_L(X_i, Y) of (B3) for X_i = i hx, i = -m .. m, at one Y,
@@ -138,7 +142,8 @@ std::vector<Real> memory_row(int m, Real y, Real hx, Real hy, Real length) {
     depth = std::numeric_limits<Real>::digits;
   } else {
     const Real gap = abs(y) - hy / 2;
-    if (gap < hx) depth = static_cast<int>(std::ceil(static_cast<double>(log(hx / gap) / log(Real(2))))) + 2;
+    if (gap < hx)
+      depth = static_cast<int>(std::ceil(static_cast<double>(log(hx / gap) / log(Real(2))))) + 2;
   }
   using Rule = GaussLegendre<Real, 16>;
   const auto& gx = Rule::nodes();
@@ -195,7 +200,8 @@ std::vector<Real> memory_row(int m, Real y, Real hx, Real hy, Real length) {
   const Real decay = exp(-hx / L);
   out[static_cast<std::size_t>(2 * m)] = tail;
   for (int i = m - 1; i >= -m; --i)
-    out[static_cast<std::size_t>(i + m)] = decay * out[static_cast<std::size_t>(i + m + 1)] + step_integral(Real(i) * hx);
+    out[static_cast<std::size_t>(i + m)] =
+        decay * out[static_cast<std::size_t>(i + m + 1)] + step_integral(Real(i) * hx);
   return out;
 }
 

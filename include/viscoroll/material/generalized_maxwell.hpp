@@ -2,7 +2,8 @@
 // the standard linear solid of Panek & Kalker (1980), Eq. (1).
 //
 // Creep in shear under a constant stress sigma applied at t = 0:
-//   e(t) = sigma / mu_D [1 + sum_k f_k (1 - exp(-t / tau_k))] H(t)                 (docs/bem.md, (B9))
+//   e(t) = sigma / mu_D [1 + sum_k f_k (1 - exp(-t / tau_k))] H(t)                 (docs/bem.md,
+//   (B9))
 // Hunter's steady-state superposition that gives Eq. (2) applies term by term, so the moving-frame
 // displacement is u = u_e + sum_k f_k int_0^inf e^(-eta) u_e(x + V tau_k eta, y) d eta (B10).
 // One term (f_1, tau_1) is the standard linear solid (f, tau).

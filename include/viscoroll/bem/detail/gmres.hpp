@@ -11,15 +11,17 @@ namespace viscoroll::bem::detail {
 
 struct GmresReport {
   bool converged = false;
-  int iterations = 0;       ///< Arnoldi steps over all cycles
+  int iterations = 0;            ///< Arnoldi steps over all cycles
   double relative_residual = 0;  ///< ||b - A x|| / ||b|| (true residual at exit)
 };
 
 /// Solves A x = b from the initial guess in x; apply_a(v, out) computes A v, apply_m(v, out) the
 /// right preconditioner M v (A M y = b - A x0, x = x0 + M y). Stops at ||b - A x|| <= tol ||b||.
 template <class Real, class ApplyA, class ApplyM>
-GmresReport gmres(ApplyA&& apply_a, ApplyM&& apply_m, const Eigen::Matrix<Real, Eigen::Dynamic, 1>& b,
-                  Eigen::Matrix<Real, Eigen::Dynamic, 1>& x, Real tol, int restart, int max_iterations) {
+GmresReport gmres(ApplyA&& apply_a, ApplyM&& apply_m,
+                  const Eigen::Matrix<Real, Eigen::Dynamic, 1>& b,
+                  Eigen::Matrix<Real, Eigen::Dynamic, 1>& x, Real tol, int restart,
+                  int max_iterations) {
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
   using std::abs;
