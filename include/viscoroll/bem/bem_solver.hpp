@@ -17,6 +17,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <boost/math/special_functions/fpclassify.hpp>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -49,8 +50,9 @@ struct BemScene {
   Real speed;
   std::function<Real(Real, Real)> profile = {};
 
-  /// Throws std::invalid_argument naming the parameter unless c1 > 0, c2 > 0, 1e-12 <= c2/c1 <=
-  /// 1e12, load > 0, speed >= 0, all finite.
+  /// Throws std::invalid_argument naming the parameter unless c1 > 0, c2 > 0, 1e-10 <= c2/c1 <=
+  /// 1e10, load > 0, speed >= 0, all finite. (The profile's values are checked by
+  /// BemSolver::solve, at the cell centres of its grid.)
   void validate() const {
     detail::require_positive("c1", c1);
     detail::require_positive("c2", c2);
@@ -157,6 +159,7 @@ class BemSolver {
     const auto t0 = clock::now();
     const auto hertz = long_term_hertz(scene);
     const auto grid = grid_for(scene);
+    if (scene.profile) validate_profile(scene, grid);
     const auto terms = bem::memory_terms_of(material_);
     const Real c = material_.instantaneous_compliance();
     const bem::InfluenceTable<Real> table(grid, c, terms, scene.speed);
@@ -177,6 +180,20 @@ class BemSolver {
   }
 
  private:
+  /// A user profile must be finite at every cell centre: a NaN or infinite gap would enter the
+  /// complementarity test unseen (a NaN gap is never negative) or the linear systems.
+  static void validate_profile(const BemScene<Real>& scene, const bem::BemGrid<Real>& grid) {
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        const Real h = scene.gap_profile(grid.x(i), grid.y(j));
+        if (!(boost::math::isfinite)(h))
+          detail::require(
+              false, "profile(x, y)", h,
+              "finite at every cell centre; here x = " + detail::format_value(grid.x(i)) +
+                  ", y = " + detail::format_value(grid.y(j)));
+      }
+  }
+
   /// (B11): the inverse continuum symbol |k| / (2 pi c (1 + sum f_k / (1 - i k_x V tau_k))) on
   /// the padded grid, |k| the discrete (finite-difference) wavenumber; the zero mode gets the
   /// value of the lowest non-zero one.
@@ -309,8 +326,9 @@ class BemSolver {
       d = x[na];
       if (!rep.converged) {
         gmres_ok = false;
+        // format_value, not std::to_string: "%f" printed a residual of 3e-7 as 0.000000.
         reason = "GMRES did not converge (relative residual " +
-                 std::to_string(rep.relative_residual) + ")";
+                 detail::format_value(rep.relative_residual) + ")";
         ++iterations;
         break;
       }
@@ -371,6 +389,20 @@ class BemSolver {
       sol.reason = "contact reaches the grid boundary (increase extent)";
     }
     locate_edges(sol);
+    // std::max skips a NaN in its second argument: a result with a non-finite number gets a NaN
+    // residual and is never reported converged.
+    bool finite = (boost::math::isfinite)(sol.d) && (boost::math::isfinite)(sol.load) &&
+                  (boost::math::isfinite)(sol.chi) && (boost::math::isfinite)(sol.a0) &&
+                  (boost::math::isfinite)(sol.b0) && (boost::math::isfinite)(sol.l);
+    for (std::size_t q = 0; q < n && finite; ++q)
+      finite = (boost::math::isfinite)(sol.pressure[q]) && (boost::math::isfinite)(sol.gap[q]);
+    if (!finite) {
+      sol.residual = std::numeric_limits<Real>::quiet_NaN();
+      if (sol.converged) {
+        sol.converged = false;
+        sol.reason = "non-finite value in the solution";
+      }
+    }
     return sol;
   }
 

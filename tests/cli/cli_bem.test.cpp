@@ -1,0 +1,154 @@
+// viscoroll-solve --method bem (issue 6): bad input prints the library's message (parameter, value,
+// range) or the driver's on stderr, exits 2 and prints nothing on stdout; good input prints one
+// JSON line per tau and exits 0.
+//
+// The test runs the built program, <build>/bin/viscoroll-solve, found next to this executable
+// (<build>/tests/viscoroll_tests). It is built by the default target (examples/CMakeLists.txt),
+// not by the viscoroll_tests target alone: where it is missing the test says so and does nothing.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path solve_program() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return self.parent_path().parent_path() / "bin" / "viscoroll-solve";
+}
+
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Runs viscoroll-solve with `args` (no shell metacharacters), capturing stdout and stderr.
+Run run(const fs::path& program, const std::string& args) {
+  const fs::path dir = fs::temp_directory_path();
+  const std::string stem = "viscoroll_cli_bem_" + std::to_string(::getpid());
+  const fs::path out = dir / (stem + ".out"), err = dir / (stem + ".err");
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on the chain of +.
+  std::string command = "'";
+  command.append(program.string()).append("' ").append(args);
+  command.append(" >'").append(out.string()).append("' 2>'").append(err.string()).append("'");
+  const int raw = std::system(command.c_str());
+  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+/// The paper's scene (docs/bem.md) on a coarse grid, with options replaced ("--mu-d=0") or
+/// removed ("--c2=") by `changes`.
+std::string arguments(const std::vector<std::string>& changes = {}) {
+  std::vector<std::pair<std::string, std::string>> options = {
+      {"--method", "bem"}, {"--mu-d", "1"}, {"--nu", "0.5"},    {"--f", "9"},      {"--tau", "1"},
+      {"--speed", "1"},    {"--c1", "1"},   {"--c2", "0.0798"}, {"--load", "5.3"}, {"--grid", "4"}};
+  for (const auto& change : changes) {
+    const auto eq = change.find('=');
+    const std::string key = change.substr(0, eq), value = change.substr(eq + 1);
+    bool found = false;
+    for (auto& o : options)
+      if (o.first == key) {
+        o.second = value;
+        found = true;
+      }
+    if (!found) options.emplace_back(key, value);
+  }
+  std::string out;
+  for (const auto& [key, value] : options)
+    if (!value.empty()) out += " " + key + " " + value;
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("cli: viscoroll-solve --method bem rejects bad input on stderr with exit 2",
+          "[cli][bem]") {
+  const fs::path program = solve_program();
+  if (program.empty() || !fs::exists(program)) {
+    WARN("viscoroll-solve not built (" << program
+                                       << "); build the default target to run this test");
+    return;
+  }
+  struct Case {
+    std::string args, message;
+  };
+  const std::vector<Case> cases = {
+      // The library's validation: parameter, value, range.
+      {arguments({"--mu-d=0"}), "viscoroll: mu_d = 0 is outside the valid range mu_d > 0"},
+      {arguments({"--mu-d=-2e-3"}), "viscoroll: mu_d = -0.002 is outside the valid range mu_d > 0"},
+      {arguments({"--nu=0.7"}), "viscoroll: nu = 0.7 is outside the valid range -1 < nu <= 0.5"},
+      {arguments({"--nu=-1"}), "viscoroll: nu = -1 is outside the valid range -1 < nu <= 0.5"},
+      {arguments({"--f=-1"}), "viscoroll: f = -1 is outside the valid range f >= 0"},
+      // Every tau is checked before anything is solved or printed.
+      {arguments({"--tau=1,-2"}), "viscoroll: tau = -2 is outside the valid range tau >= 0"},
+      {arguments({"--c1=-1"}), "viscoroll: c1 = -1 is outside the valid range c1 > 0"},
+      {arguments({"--c2=0"}), "viscoroll: c2 = 0 is outside the valid range c2 > 0"},
+      {arguments({"--c2=1e11"}),
+       "viscoroll: c2/c1 = 100000000000 is outside the valid range 1e-10 <= c2/c1 <= 1e10"},
+      {arguments({"--c2=1e-11"}),
+       "viscoroll: c2/c1 = 1e-11 is outside the valid range 1e-10 <= c2/c1 <= 1e10"},
+      {arguments({"--load=0"}), "viscoroll: load = 0 is outside the valid range load > 0"},
+      {arguments({"--speed=-1"}), "viscoroll: speed = -1 is outside the valid range speed >= 0"},
+      // The driver's own checks.
+      {arguments({"--c2="}), "--method bem needs --c2"},
+      {arguments({"--grid=1"}),
+       "--grid (bem: elements per semi-axis) expects 2 <= N <= 512, got 1"},
+      {arguments({"--grid=513"}),
+       "--grid (bem: elements per semi-axis) expects 2 <= N <= 512, got 513"},
+      {arguments({"--grid=4x"}), "--grid expects a positive integer, got '4x'"},
+      {arguments({"--c2=nan"}), "--c2 expects a finite number, got 'nan'"},
+      {arguments({"--load=1e999"}), "--load expects a finite number, got '1e999'"},
+      {arguments({"--extent=2"}), "unknown option '--extent'"},
+      {arguments() + " --grid 5", "--grid given twice"},
+  };
+  for (const auto& c : cases) {
+    const Run r = run(program, c.args);
+    INFO("viscoroll-solve " << c.args << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(c.message) != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: viscoroll-solve --method bem prints one converged JSON line per tau",
+          "[cli][bem]") {
+  const fs::path program = solve_program();
+  if (program.empty() || !fs::exists(program)) {
+    WARN("viscoroll-solve not built (" << program
+                                       << "); build the default target to run this test");
+    return;
+  }
+  const Run r = run(program, arguments({"--tau=0,1"}));
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  std::istringstream lines(r.out);
+  std::string line;
+  int n = 0;
+  while (std::getline(lines, line)) {
+    ++n;
+    CHECK(line.starts_with("{\"method\":\"bem\""));
+    CHECK(line.find("\"converged\":true") != std::string::npos);
+    CHECK(line.find("null") == std::string::npos);
+  }
+  CHECK(n == 2);
+}
