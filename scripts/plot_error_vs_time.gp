@@ -7,6 +7,7 @@
 #         (converged == false: uncertified values, never drawn as part of the solid curves);
 #   red   BEM (N = 4 ... 64 elements per semi-axis): solid = against its finest grid,
 #         dashed = against the line solver's reference.
+# Dotted verticals: the run time of each method's reference (its self error is 0, not drawn).
 # The dashed curves level off at the line theory's modelling error (plus the references' own
 # discretisation errors); the solid ones measure the discretisation error only.
 # usage: gnuplot -e "dir='docs/figures'; outdir='docs/figures'" scripts/plot_error_vs_time.gp
@@ -31,15 +32,22 @@ pos(x) = x > 0 ? x : NaN
 is(m, v) = strcol(1) eq m && abs(column(2) / v - 1) < 1e-9
 sel(m, v, conv) = is(m, v) && column(4) == conv ? column(5) : NaN
 
-# Reference discretisation of each method and speed (for the panel titles).
+# Reference discretisation of each method and speed (panel titles) and its run time (a dotted
+# vertical line in the method's colour: the self errors are measured against that point).
 array lref[rows]
 array bref[rows]
+array lsec[rows]
+array bsec[rows]
 do for [r = 1:rows] {
   v = real(word(speeds, r))
   stats data u (is('line', v) && column(23) == 1 ? column(3) : NaN) nooutput
   lref[r] = STATS_records > 0 ? sprintf('%d', STATS_max) : 'none'
+  stats data u (is('line', v) && column(23) == 1 ? column(5) : NaN) nooutput
+  lsec[r] = STATS_records > 0 ? STATS_max : NaN
   stats data u (is('bem', v) && column(23) == 1 ? column(3) : NaN) nooutput
   bref[r] = STATS_records > 0 ? sprintf('%d', STATS_max) : 'none'
+  stats data u (is('bem', v) && column(23) == 1 ? column(5) : NaN) nooutput
+  bsec[r] = STATS_records > 0 ? STATS_max : NaN
 }
 
 set multiplot layout rows, 5 title "Relative error against run time, paper's scene (f = 9, 5:1): line solver (blue) and 3-D BEM (red); solid = self-convergence, dashed = against the other method; open = not converged" font ',13'
@@ -58,6 +66,10 @@ do for [k = 2:4] {
 set key bottom left font ',9' samplen 2 spacing 0.9 opaque
 do for [r = 1:rows] {
   v = real(word(speeds, r))
+  unset arrow 5
+  unset arrow 6
+  if (lsec[r] == lsec[r]) { set arrow 5 from first lsec[r], graph 0 to first lsec[r], graph 1 nohead dt 3 lw 1.5 lc rgb '#1f5fbf' }
+  if (bsec[r] == bsec[r]) { set arrow 6 from first bsec[r], graph 0 to first bsec[r], graph 1 nohead dt 3 lw 1.5 lc rgb '#d62728' }
   do for [q = 1:5] {
     set title sprintf('%s, V tau/a_0 = %g  (refs: line terms %s, BEM N = %s)', word(titles, q), v, lref[r], bref[r]) font ',11'
     if (q == 1) { set ylabel 'relative error' } else { unset ylabel }
