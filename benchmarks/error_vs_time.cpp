@@ -284,8 +284,8 @@ std::vector<int> parse_counts(std::string_view option, std::string_view text, in
 
 std::string describe(const Point* p) {
   if (p == nullptr) return "not reached";
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.3g s (%s %d)", p->seconds,
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%.3g s wall, %.3g s CPU (%s %d)", p->seconds, p->cpu_seconds,
                 p->method == "line" ? "terms" : "N =", p->n);
   return buf;
 }
