@@ -19,11 +19,11 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "cli/solve_options.hpp"
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
+
+#include "cli/solve_options.hpp"
 
 namespace {
 
@@ -41,20 +41,24 @@ int run_plane(const SolveOptions& o) {
   std::vector<Solver> solvers;
   const viscoroll::PlaneScene<double> scene{o.c1, o.load, o.speed};
   scene.validate();
-  for (double tau : o.tau) solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau));
+  for (double tau : o.tau)
+    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau));
   bool all_converged = true;
   for (std::size_t i = 0; i < solvers.size(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     const auto s = solvers[i].solve(scene);
     const auto peak = s.peak();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     all_converged = all_converged && s.converged;
-    std::cout << "{\"method\":\"plane\",\"tau\":" << number(o.tau[i]) << ",\"vtau\":" << number(o.speed * o.tau[i])
-              << ",\"a0\":" << number(s.a) << ",\"b0\":" << number(s.b) << ",\"a_long_term\":" << number(s.a_long_term)
+    std::cout << "{\"method\":\"plane\",\"tau\":" << number(o.tau[i])
+              << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << number(s.a)
+              << ",\"b0\":" << number(s.b) << ",\"a_long_term\":" << number(s.a_long_term)
               << ",\"chi\":" << number(s.chi) << ",\"pmax\":" << number(peak.pressure)
               << ",\"pmax_x\":" << number(peak.x) << ",\"seconds\":" << number(seconds)
-              << ",\"converged\":" << (s.converged ? "true" : "false") << ",\"iterations\":" << s.iterations
-              << ",\"residual\":" << number(s.residual) << "}\n";
+              << ",\"converged\":" << (s.converged ? "true" : "false")
+              << ",\"iterations\":" << s.iterations << ",\"residual\":" << number(s.residual)
+              << "}\n";
   }
   return all_converged ? 0 : 1;
 }
@@ -86,8 +90,9 @@ int line_terms(const SolveOptions& o) {
   constexpr long default_terms = 6, max_terms = 64;
   const long n = o.grid.value_or(default_terms);
   if (n < 1 || n > max_terms)
-    throw std::invalid_argument("viscoroll-solve: --grid (line: Chebyshev terms) expects 1 <= N <= " +
-                                std::to_string(max_terms) + ", got " + std::to_string(n));
+    throw std::invalid_argument(
+        "viscoroll-solve: --grid (line: Chebyshev terms) expects 1 <= N <= " +
+        std::to_string(max_terms) + ", got " + std::to_string(n));
   return static_cast<int>(n);
 }
 
@@ -97,7 +102,9 @@ int line_terms(const SolveOptions& o) {
 int run_line(const SolveOptions& o) {
   using Solver = viscoroll::LineSolverD;
   using Solution = Solver::Solution;
-  if (!o.c2) throw std::invalid_argument("viscoroll-solve: --method line needs --c2; " + viscoroll::cli::usage());
+  if (!o.c2)
+    throw std::invalid_argument("viscoroll-solve: --method line needs --c2; " +
+                                viscoroll::cli::usage());
   viscoroll::LineOptions options;
   options.terms = line_terms(o);
   const viscoroll::LineScene<double> scene{o.c1, *o.c2, o.load, o.speed};
@@ -109,10 +116,12 @@ int run_line(const SolveOptions& o) {
   std::optional<Solution> previous;
   for (std::size_t i = 0; i < solvers.size(); ++i) {
     const auto start = std::chrono::steady_clock::now();
-    const Solution* seed = previous && previous->converged && previous->iterations > 0 ? &*previous : nullptr;
+    const Solution* seed =
+        previous && previous->converged && previous->iterations > 0 ? &*previous : nullptr;
     Solution s = solvers[i].solve(scene, seed);
     const auto peak = s.strip(0.0).peak();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     all_converged = all_converged && s.converged;
     std::string warnings = "[";
     for (std::size_t k = 0; k < s.warnings.size(); ++k) {
@@ -120,16 +129,20 @@ int run_line(const SolveOptions& o) {
       warnings += json_string(s.warnings[k]);
     }
     warnings += "]";
-    std::cout << "{\"method\":\"line\",\"tau\":" << number(o.tau[i]) << ",\"vtau\":" << number(o.speed * o.tau[i])
-              << ",\"a0\":" << json_number(s.a(0.0)) << ",\"b0\":" << json_number(s.b(0.0))
-              << ",\"l\":" << json_number(s.l()) << ",\"d\":" << json_number(s.d)
-              << ",\"a_long_term\":" << number(s.a_long_term) << ",\"l0\":" << number(s.l_long_term)
-              << ",\"d0\":" << number(s.d_long_term) << ",\"chi\":" << json_number(s.chi)
-              << ",\"pmax\":" << json_number(peak.pressure) << ",\"pmax_x\":" << json_number(peak.x)
-              << ",\"seconds\":" << number(seconds) << ",\"converged\":" << (s.converged ? "true" : "false")
+    std::cout << "{\"method\":\"line\",\"tau\":" << number(o.tau[i])
+              << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << json_number(s.a(0.0))
+              << ",\"b0\":" << json_number(s.b(0.0)) << ",\"l\":" << json_number(s.l())
+              << ",\"d\":" << json_number(s.d) << ",\"a_long_term\":" << number(s.a_long_term)
+              << ",\"l0\":" << number(s.l_long_term) << ",\"d0\":" << number(s.d_long_term)
+              << ",\"chi\":" << json_number(s.chi) << ",\"pmax\":" << json_number(peak.pressure)
+              << ",\"pmax_x\":" << json_number(peak.x) << ",\"seconds\":" << number(seconds)
+              << ",\"converged\":" << (s.converged ? "true" : "false")
               << ",\"iterations\":" << s.iterations << ",\"residual\":" << json_number(s.residual)
               << ",\"terms\":" << options.terms << ",\"reason\":" << json_string(s.reason)
               << ",\"warnings\":" << warnings << "}\n";
+    for (const auto& w : s.warnings)
+      std::cerr << "viscoroll-solve: warning: line solution for tau = " << number(o.tau[i]) << ": "
+                << w << "\n";
     if (!s.converged)
       std::cerr << "viscoroll-solve: line solution for tau = " << number(o.tau[i])
                 << " did not converge: " << s.reason << "\n";
@@ -143,8 +156,9 @@ int bem_grid(const SolveOptions& o) {
   constexpr long default_grid = 16, max_grid = 512;
   const long n = o.grid.value_or(default_grid);
   if (n < 2 || n > max_grid)
-    throw std::invalid_argument("viscoroll-solve: --grid (bem: elements per semi-axis) expects 2 <= N <= " +
-                                std::to_string(max_grid) + ", got " + std::to_string(n));
+    throw std::invalid_argument(
+        "viscoroll-solve: --grid (bem: elements per semi-axis) expects 2 <= N <= " +
+        std::to_string(max_grid) + ", got " + std::to_string(n));
   return static_cast<int>(n);
 }
 
@@ -153,7 +167,9 @@ int bem_grid(const SolveOptions& o) {
 int run_bem(const SolveOptions& o) {
   using Solver = viscoroll::BemSolverD;
   using Solution = viscoroll::BemSolution<double>;
-  if (!o.c2) throw std::invalid_argument("viscoroll-solve: --method bem needs --c2; " + viscoroll::cli::usage());
+  if (!o.c2)
+    throw std::invalid_argument("viscoroll-solve: --method bem needs --c2; " +
+                                viscoroll::cli::usage());
   viscoroll::BemOptions options;
   options.grid = bem_grid(o);
   const viscoroll::BemScene<double> scene{o.c1, *o.c2, o.load, o.speed};
@@ -167,24 +183,29 @@ int run_bem(const SolveOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const Solution* seed = previous && previous->converged ? &*previous : nullptr;
     Solution s = solvers[i].solve(scene, seed);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     all_converged = all_converged && s.converged;
     std::size_t peak = 0;
     for (std::size_t q = 0; q < s.pressure.size(); ++q)
       if (s.pressure[q] > s.pressure[peak]) peak = q;
     const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
-    std::cout << "{\"method\":\"bem\",\"tau\":" << number(o.tau[i]) << ",\"vtau\":" << number(o.speed * o.tau[i])
-              << ",\"a0\":" << json_number(s.a0) << ",\"b0\":" << json_number(s.b0) << ",\"l\":" << json_number(s.l)
+    std::cout << "{\"method\":\"bem\",\"tau\":" << number(o.tau[i])
+              << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << json_number(s.a0)
+              << ",\"b0\":" << json_number(s.b0) << ",\"l\":" << json_number(s.l)
               << ",\"d\":" << json_number(s.d) << ",\"a_long_term\":" << number(s.long_term.a)
               << ",\"l0\":" << number(s.long_term.b) << ",\"d0\":" << number(s.long_term.d)
               << ",\"chi\":" << json_number(s.chi) << ",\"pmax\":" << json_number(s.pressure[peak])
-              << ",\"pmax_x\":" << json_number(s.grid.x(peak_i)) << ",\"seconds\":" << number(seconds)
-              << ",\"converged\":" << (s.converged ? "true" : "false") << ",\"iterations\":" << s.iterations
-              << ",\"gmres_iterations\":" << s.krylov_iterations << ",\"residual\":" << json_number(s.residual)
-              << ",\"grid\":" << options.grid << ",\"cells\":" << s.grid.size() << ",\"reason\":" << json_string(s.reason)
-              << "}\n";
+              << ",\"pmax_x\":" << json_number(s.grid.x(peak_i))
+              << ",\"seconds\":" << number(seconds)
+              << ",\"converged\":" << (s.converged ? "true" : "false")
+              << ",\"iterations\":" << s.iterations
+              << ",\"gmres_iterations\":" << s.krylov_iterations
+              << ",\"residual\":" << json_number(s.residual) << ",\"grid\":" << options.grid
+              << ",\"cells\":" << s.grid.size() << ",\"reason\":" << json_string(s.reason) << "}\n";
     if (!s.converged)
-      std::cerr << "viscoroll-solve: bem solution for tau = " << number(o.tau[i]) << " did not converge: " << s.reason << "\n";
+      std::cerr << "viscoroll-solve: bem solution for tau = " << number(o.tau[i])
+                << " did not converge: " << s.reason << "\n";
     previous = std::move(s);
   }
   return all_converged ? 0 : 1;
@@ -197,9 +218,12 @@ int main(int argc, char** argv) {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     switch (options.method) {
-      case Method::plane: return run_plane(options);
-      case Method::line: return run_line(options);
-      case Method::bem: return run_bem(options);
+      case Method::plane:
+        return run_plane(options);
+      case Method::line:
+        return run_line(options);
+      case Method::bem:
+        return run_bem(options);
     }
   } catch (const std::invalid_argument& e) {
     std::cerr << e.what() << "\n";

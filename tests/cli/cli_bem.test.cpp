@@ -152,3 +152,29 @@ TEST_CASE("cli: viscoroll-solve --method bem prints one converged JSON line per 
   }
   CHECK(n == 2);
 }
+
+TEST_CASE("cli: viscoroll-solve --method line prints the domain warning on stderr too",
+          "[cli][line]") {
+  const fs::path program = solve_program();
+  if (program.empty() || !fs::exists(program)) {
+    WARN("viscoroll-solve not built (" << program
+                                       << "); build the default target to run this test");
+    return;
+  }
+  // C2/C1 = 0.3 makes a short contact (measured l/a(0) = 2.67 at V tau = C1 = 1): converged, exit
+  // 0, the warning in the JSON and on stderr.
+  const Run r = run(program, arguments({"--method=line", "--c2=0.3", "--grid=4"}));
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("\"converged\":true") != std::string::npos);
+  CHECK(r.out.find("l/a(0) = ") != std::string::npos);
+  CHECK(
+      r.err.find("viscoroll-solve: warning: line solution for tau = 1: contact aspect l/a(0) = ") !=
+      std::string::npos);
+  // The paper's scene (l/a(0) = 4.6 at V tau = a0 = 1): no warning anywhere.
+  const Run ok = run(program, arguments({"--method=line", "--grid=4"}));
+  INFO("stdout: " << ok.out << "\nstderr: " << ok.err);
+  CHECK(ok.status == 0);
+  CHECK(ok.err.empty());
+  CHECK(ok.out.find("\"warnings\":[]") != std::string::npos);
+}

@@ -57,7 +57,8 @@ struct LineOptions {
   /// Discretisation: ln a(y) has `terms` Chebyshev coefficients, b(y) has terms + 1; the
   /// equations are collocated at terms + 1 points.
   int terms = 8;
-  /// Levenberg-Marquardt iterations allowed (each costs 2 terms + 4 residual evaluations).
+  /// Levenberg-Marquardt iterations allowed (each costs one residual evaluation per damping try,
+  /// plus 2 terms + 3 when the difference Jacobian is refreshed).
   int max_iterations = 100;
   /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
   LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
@@ -118,10 +119,34 @@ struct LineSolution {
   }
 };
 
+/// The line theory's domain (Section 3: the contact is slender, a(y) << l): a warning when
+/// l/a(0) < 3, and one when a(y) somewhere reaches l/3 (a(y) can exceed a(0), as at the dip of
+/// a(0) near V tau = 5 a0). a(y) is sampled at 65 points y = l k/64, k = 0..64. Empty inside it.
+template <RealScalar Real>
+std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
+  std::vector<std::string> warnings;
+  const Real l = shape.l, a0 = shape.a(Real(0));
+  const Real aspect = l / a0;
+  if (!(aspect >= 3))
+    warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
+                       " < 3: outside the line-contact theory's domain of validity");
+  Real a_max = a0, y_max = 0;
+  for (int k = 1; k <= 64; ++k) {
+    const Real y = l * Real(k) / 64, a = shape.a(y);
+    if (a > a_max) a_max = a, y_max = y;
+  }
+  if (a_max > a0 && !(l >= 3 * a_max))
+    warnings.push_back("a(y) = " + std::to_string(double(a_max)) +
+                       " at y = " + std::to_string(double(y_max)) +
+                       " is not small against l = " + std::to_string(double(l)) +
+                       " (l/max a(y) < 3): outside the line-contact theory's domain of validity");
+  return warnings;
+}
+
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
 /// quadrature rule (applied on the graded panels of every line integral).
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 12>>
-  requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
+requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 class LineSolver {
  public:
   using Solution = LineSolution<Real, Quadrature>;
@@ -166,24 +191,27 @@ class LineSolver {
     const Real c = material_.instantaneous_compliance();
     const Real f = material_.creep_ratio();
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
-    return LineResidual<Real, Quadrature>(problem(scene, slow, f, scene.speed * material_.relaxation_time()),
-                                          options_.terms, options_.leading_edge, options_.basis);
+    return LineResidual<Real, Quadrature>(
+        problem(scene, slow, f, scene.speed * material_.relaxation_time()), options_.terms,
+        options_.leading_edge, options_.basis);
   }
 
  private:
-  static LineProblem<Real> problem(const LineScene<Real>& scene, const StaticLineContact<Real>& slow,
-                                   Real f, Real vtau) {
-    return {scene.c1, scene.c2, vtau, f, slow.a0, slow.l, scene.c1 * slow.a0 * slow.a0 * slow.l / 3};
+  static LineProblem<Real> problem(const LineScene<Real>& scene,
+                                   const StaticLineContact<Real>& slow, Real f, Real vtau) {
+    return {
+        scene.c1, scene.c2, vtau, f, slow.a0, slow.l, scene.c1 * slow.a0 * slow.a0 * slow.l / 3};
   }
 
   Solution closed_form(const LineScene<Real>& scene, const StaticLineContact<Real>& s,
-                       const StaticLineContact<Real>& slow, Real c, Real f, const char* reason) const {
+                       const StaticLineContact<Real>& slow, Real c, Real f,
+                       const char* reason) const {
     using std::log;
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol{shape, s.d, slow.a0, slow.l, slow.d, Real(0), true, reason, 0, Real(0), {}, scene.c1,
-                 Real(0), f, c};
+    Solution sol{shape, s.d,     slow.a0, slow.l,   slow.d,  Real(0), true, reason,
+                 0,     Real(0), {},      scene.c1, Real(0), f,       c};
     add_warnings(sol);
     return sol;
   }
@@ -234,30 +262,40 @@ class LineSolver {
     }
     Outcome total;
     for (std::size_t k = 0; k < stages.size(); ++k) {
-      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge, options_.basis);
+      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge,
+                                               options_.basis);
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
         if (k == 0) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
         if (!res(x, r))
-          return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain", total.iterations);
+          return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain",
+                         total.iterations);
       }
       const Outcome out = iterate(res, x, r);
       total.iterations += out.iterations;
-      if (out.undefined) return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", total.iterations);
+      if (out.undefined)
+        return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", total.iterations);
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
       if (k + 1 == stages.size())
-        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason, total.iterations);
+        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason,
+                    total.iterations);
     }
-    return failure(scene, slow, c, f, vtau,
-                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge, options_.basis),
-                   Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
+    return failure(
+        scene, slow, c, f, vtau,
+        LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge, options_.basis),
+        Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
   }
 
-  /// Levenberg-Marquardt with Marquardt's diagonal scaling and a forward-difference Jacobian, from
-  /// x (with r = res(x)); x and r hold the last accepted iterate on return.
+  /// Levenberg-Marquardt with Marquardt's diagonal scaling, from x (with r = res(x)); x and r hold
+  /// the last accepted iterate on return. The Jacobian is a forward difference (2 terms + 3
+  /// residual evaluations) refreshed only when needed: after an accepted step it takes Broyden's
+  /// rank-one update J += (dr - J s) s^T / (s^T s), which satisfies the secant condition J s = dr
+  /// (docs/line-solver.md, "Jacobian"). When the updated Jacobian finds no descent step within a
+  /// few dampings, the difference Jacobian is recomputed; "no descent step" is decided with a
+  /// fresh one only, so the stopping reasons are those of the plain method.
   Outcome iterate(const LineResidual<Real, Quadrature>& res, Vector& x, Vector& r) const {
     using std::abs;
     using std::pow;
@@ -271,56 +309,89 @@ class LineSolver {
     Matrix jac(res.equations(), n);
     Vector trial(n), rt(res.equations());
     Outcome out;
-    for (; out.iterations < options_.max_iterations; ++out.iterations) {
+    bool fresh = false;
+    const auto difference_jacobian = [&]() {
       for (int j = 0; j < n; ++j) {
         const Real h = sqrt(eps) * std::max(Real(1), Real(abs(x[j])));
         trial = x;
         trial[j] += h;
         if (!res(trial, rt)) {
           trial[j] = x[j] - h;
-          if (!res(trial, rt)) {
-            out.undefined = true;
-            out.reason = "Jacobian undefined";
-            return out;
-          }
+          if (!res(trial, rt)) return false;
           jac.col(j) = (r - rt) / h;
         } else {
           jac.col(j) = (rt - r) / h;
         }
       }
-      const Vector grad = jac.transpose() * r;
-      Vector diag = jac.colwise().squaredNorm().transpose();
-      for (int j = 0; j < n; ++j) diag[j] = std::max(diag[j], Real(1e-12));
+      fresh = true;
+      return true;
+    };
+    for (; out.iterations < options_.max_iterations; ++out.iterations) {
+      if (out.iterations == 0 && !difference_jacobian()) {
+        out.undefined = true;
+        out.reason = "Jacobian undefined";
+        return out;
+      }
       bool accepted = false;
       Vector step;
-      for (int attempt = 0; attempt < 40; ++attempt) {
-        Matrix a = jac.transpose() * jac;
-        for (int j = 0; j < n; ++j) a(j, j) += mu * diag[j];
-        step = a.ldlt().solve(-grad);
-        trial = x + step;
-        if (res(trial, rt)) {
-          const Real trial_cost = rt.squaredNorm();
-          if (trial_cost < cost) {
-            x = trial;
-            r = rt;
-            cost = trial_cost;
-            mu = std::max(mu / 4, Real(1e-12));
-            accepted = true;
-            break;
+      for (;;) {
+        const Vector grad = jac.transpose() * r;
+        Vector diag = jac.colwise().squaredNorm().transpose();
+        for (int j = 0; j < n; ++j) diag[j] = std::max(diag[j], Real(1e-12));
+        // A fresh Jacobian gets the full damping range; an updated one a few tries before refresh.
+        const int attempts = fresh ? 40 : 4;
+        for (int attempt = 0; attempt < attempts; ++attempt) {
+          Matrix a = jac.transpose() * jac;
+          for (int j = 0; j < n; ++j) a(j, j) += mu * diag[j];
+          step = a.ldlt().solve(-grad);
+          trial = x + step;
+          if (res(trial, rt)) {
+            const Real trial_cost = rt.squaredNorm();
+            if (trial_cost < cost) {
+              accepted = true;
+              break;
+            }
           }
+          mu *= 8;
         }
-        mu *= 8;
+        if (accepted || fresh) break;
+        mu = std::max(Real(mu / pow(Real(8), Real(attempts))),
+                      Real(1e-12));  // the damping of before the tries
+        if (!difference_jacobian()) {
+          out.undefined = true;
+          out.reason = "Jacobian undefined";
+          return out;
+        }
       }
       if (!accepted) {
         out.reason = "no descent step (Levenberg-Marquardt damping exhausted)";
         return out;
       }
+      // Broyden's update with the accepted step s and the change of residual rt - r.
+      const bool newton_step = fresh;
+      const Real ss = step.squaredNorm();
+      if (ss > 0) jac += ((rt - r) - jac * step) * (step.transpose() / ss);
+      fresh = false;
+      x = trial;
+      r = rt;
+      cost = r.squaredNorm();
+      mu = std::max(mu / 4, Real(1e-12));
       const Real rmax = r.cwiseAbs().maxCoeff();
-      if (step.cwiseAbs().maxCoeff() <= step_tol * (1 + x.cwiseAbs().maxCoeff()) && rmax <= residual_tol) {
-        out.converged = true;
-        out.reason = "converged";
-        ++out.iterations;
-        return out;
+      if (step.cwiseAbs().maxCoeff() <= step_tol * (1 + x.cwiseAbs().maxCoeff()) &&
+          rmax <= residual_tol) {
+        // The step test is met: one more step from a fresh Jacobian, whose quadratic convergence
+        // takes the residual to rounding, unless this step already was one.
+        if (newton_step) {
+          out.converged = true;
+          out.reason = "converged";
+          ++out.iterations;
+          return out;
+        }
+        if (!difference_jacobian()) {
+          out.undefined = true;
+          out.reason = "Jacobian undefined";
+          return out;
+        }
       }
       if (rmax <= 4 * eps) {
         out.converged = true;
@@ -335,16 +406,28 @@ class LineSolver {
   Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
                 Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                 const Vector& r, bool converged, std::string reason, int iterations) const {
-    Solution sol{res.shape(x), res.penetration(x), slow.a0, slow.l, slow.d, Real(0), converged,
-                 std::move(reason), iterations, r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0),
-                 {}, scene.c1, vtau, f, c};
+    Solution sol{res.shape(x),
+                 res.penetration(x),
+                 slow.a0,
+                 slow.l,
+                 slow.d,
+                 Real(0),
+                 converged,
+                 std::move(reason),
+                 iterations,
+                 r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0),
+                 {},
+                 scene.c1,
+                 vtau,
+                 f,
+                 c};
     sol.chi = rolling_friction(sol);
     add_warnings(sol);
     return sol;
   }
 
-  Solution failure(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
-                   Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
+  Solution failure(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
+                   Real f, Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                    const char* reason, int iterations) const {
     Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
     return make(scene, slow, c, f, vtau, res, x, r, false, reason, iterations);
@@ -355,15 +438,17 @@ class LineSolver {
   static Real rolling_friction(const Solution& sol) {
     std::vector<Real> nodes, weights;
     const Real l = sol.shape.l;
-    detail::append_graded_nodes<Quadrature>(nodes, weights, l, l / 2, l * std::numeric_limits<Real>::epsilon() * 16);
+    detail::append_graded_nodes<Quadrature>(nodes, weights, l, l / 2,
+                                            l * std::numeric_limits<Real>::epsilon() * 16);
     Real num = 0, den = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j) {
       const auto s = sol.functions(nodes[j]);
       if (!(s.a > 0)) continue;
       const Real alpha = (1 + sol.f) * s.a / sol.vtau;
-      const Real vn = sol.c1 / 4 *
-                      strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, special::bessel_i1_over_i0(alpha),
-                                         special::bessel_i2_over_i0(alpha));
+      const Real vn =
+          sol.c1 / 4 *
+          strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, special::bessel_i1_over_i0(alpha),
+                             special::bessel_i2_over_i0(alpha));
       num += weights[j] * vn;
       den += weights[j] * s.f0;
     }
@@ -371,10 +456,7 @@ class LineSolver {
   }
 
   static void add_warnings(Solution& sol) {
-    const Real aspect = sol.shape.l / sol.shape.a(Real(0));
-    if (aspect < 3)
-      sol.warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
-                             " < 3: outside the line-contact theory's domain of validity");
+    for (auto& w : line_domain_warnings(sol.shape)) sol.warnings.push_back(std::move(w));
   }
 
   Material material_;
