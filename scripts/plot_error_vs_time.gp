@@ -54,7 +54,7 @@ set multiplot layout rows, 5 title "Relative error against run time, paper's sce
 set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'
-set xrange [3e-3:60]
+set xrange [2e-3:30]
 set yrange [1e-10:1]
 set ytics 1e-10, 100, 1
 set mytics 10
