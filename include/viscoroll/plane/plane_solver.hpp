@@ -171,8 +171,9 @@ class PlaneSolver {
   /// F0 = C1 a^2 / 4 (Eq. 33 with G = 0). The glassy limit is reported in this form with f = 0
   /// (the instantaneous compliance alone), as LineSolver reports its glassy closed form.
   static Solution static_solution(const PlaneScene<Real>& scene, Real a, Real a0, Real c, Real f) {
+    const StripPressure<Real, Quadrature> strip(scene.c1, a, Real(0), Real(0), Real(0), f, c);
     return Solution{a, Real(0), Real(0), a0, scene.c1 * a * a / 4, Real(0), Real(0), true, 0,
-                    Real(0), StripPressure<Real, Quadrature>(scene.c1, a, Real(0), Real(0), Real(0), f, c)};
+                    Real(0), strip};
   }
 
   /// True when the glassy closed form is within eps of the rolling solution: by (P6) the
