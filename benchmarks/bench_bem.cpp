@@ -3,10 +3,26 @@
 // grid N (elements per semi-axis of the static Hertz ellipse). Target (issue 4): d and chi
 // grid-converged to 0.1% in under 10 s on one core; docs/bem.md shows that N = 16 is (d and chi
 // within 0.05% of N = 64). Counters: d, chi, a(0), active-set and GMRES iterations.
+//
+// BM_bem_apply: one application of the convolution operator u = K * p of (B6)-(B7) (two 2-D
+// FFTs of the zero-padded grid, Eigen's FFT with the kissfft back end, and the product with the
+// kernel's spectrum), for float, double and long double (the scalars Eigen's kissfft back end
+// transforms; the coefficients themselves are computed in at least double, coefficient_real_t),
+// at N = 8, 16, 32, 64 elements per semi-axis (grid (2 ceil(1.6 N) + 1)^2 cells). The cost does
+// not depend on the coefficients' values; the elastic table (B1)-(B2) is used.
+//
+// BM_bem_setup: the influence table (B6) with its memory rows (B3)-(B5) and its transform (B7),
+// the BemSolver's set-up, for the elastic material and the standard linear solid (f = 9) at
+// V tau / a0 = 0, 1 and 1e12 (glassy), N = 8 and 16. Elastic and V tau = 0 need only Love's
+// coefficients (B1)-(B2); V tau > 0 adds the exponential recurrence (B4)-(B5) per row, also in
+// the glassy limit, where the memory term is O((a/V tau) ln(V tau/a)) of the elastic one.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 #include <viscoroll/bem/bem_solver.hpp>
+#include <viscoroll/material/elastic.hpp>
 
 namespace {
 
@@ -33,7 +49,90 @@ void BM_bem_paper_scene(benchmark::State& state) {
   state.counters["cells"] = static_cast<double>(s.grid.size());
 }
 
+/// The paper's grid for N elements per semi-axis (static Hertz ellipse of the long-term
+/// compliance): the same grid BemSolver::solve uses.
+template <class Real, class Material>
+viscoroll::bem::BemGrid<Real> paper_grid(const Material& material, int n, double f) {
+  viscoroll::BemOptions o;
+  o.grid = n;
+  const double c = (1 - 0.5) / (2 * std::acos(-1.0));
+  const viscoroll::BemScene<Real> scene{Real(1), Real((std::log(20.0) - 1) / 25),
+                                        Real(5.0 / (3 * (1 + f) * c)), Real(1)};
+  return viscoroll::BemSolver<Real, Material>(material, o).grid_for(scene);
+}
+
+template <class Real>
+void BM_bem_apply(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const viscoroll::Elastic<Real> material(Real(0.1), Real(0.5));
+  const auto grid = paper_grid<Real>(material, n, 9.0);
+  const viscoroll::bem::InfluenceTable<Real> table(grid, material.instantaneous_compliance(), {},
+                                                   Real(0));
+  const viscoroll::bem::ConvolutionOperator<Real> op(table);
+  std::vector<Real> p(grid.size()), u(grid.size());
+  for (std::size_t q = 0; q < p.size(); ++q) p[q] = Real(1) + Real(q % 7) / 8;
+  for (auto _ : state) {
+    op.apply(p, u);
+    benchmark::DoNotOptimize(u.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(std::to_string(grid.nx) + "x" + std::to_string(grid.ny) + " cells, FFT " +
+                 std::to_string(op.fft_nx()) + "x" + std::to_string(op.fft_ny()));
+  state.counters["cells"] = static_cast<double>(grid.size());
+}
+
+/// Regime of BM_bem_setup: 0 elastic, 1 SLS V tau = 0, 2 SLS V tau/a0 = 1, 3 SLS V tau/a0 = 1e12.
+void BM_bem_setup(benchmark::State& state) {
+  const int regime = static_cast<int>(state.range(0));
+  const int n = static_cast<int>(state.range(1));
+  const double f = 9;
+  const viscoroll::StandardLinearSolid<double> sls(1.0, 0.5, f, 1.0);
+  const auto grid = paper_grid<double>(sls, n, f);
+  const double speed = regime == 1 ? 0.0 : regime == 2 ? 1.0 : 1e12;  // a0 = 1, tau = 1
+  std::vector<viscoroll::PronyTerm<double>> terms;
+  double compliance = sls.instantaneous_compliance();
+  if (regime == 0) {
+    const viscoroll::Elastic<double> elastic(1.0 / (1 + f), 0.5);  // the long-term modulus
+    terms = viscoroll::bem::memory_terms_of(elastic);
+    compliance = elastic.instantaneous_compliance();
+  } else {
+    terms = viscoroll::bem::memory_terms_of(sls);
+  }
+  for (auto _ : state) {
+    const viscoroll::bem::InfluenceTable<double> table(grid, compliance, terms, speed);
+    const viscoroll::bem::ConvolutionOperator<double> op(table);
+    benchmark::DoNotOptimize(&op);
+    benchmark::ClobberMemory();
+  }
+  const char* names[] = {"Elastic", "SLS V tau/a0 = 0", "SLS V tau/a0 = 1",
+                         "SLS V tau/a0 = 1e12 (glassy)"};
+  state.SetLabel(std::string(names[regime]) + ", " + std::to_string(grid.nx) + "x" +
+                 std::to_string(grid.ny) + " cells");
+  state.counters["memory_terms"] = static_cast<double>(terms.size());
+}
+
 }  // namespace
+
+BENCHMARK_TEMPLATE(BM_bem_apply, float)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_bem_apply, double)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_bem_apply, long double)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMicrosecond);
+// Arguments: regime (0 elastic, 1 V tau = 0, 2 V tau/a0 = 1, 3 V tau/a0 = 1e12), N.
+BENCHMARK(BM_bem_setup)->ArgsProduct({{0, 1, 2, 3}, {8, 16}})->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_bem_paper_scene)
     ->Arg(8)

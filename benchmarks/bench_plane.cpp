@@ -1,6 +1,7 @@
 // One plane (Hunter) solution: a, b, G and chi (docs/theory.md (P5), (P7)); the pressure at a
 // point (Eq. 35) and the peak search, separately. Target (issue 2): a solution under 100 us.
 #include <benchmark/benchmark.h>
+
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
@@ -16,7 +17,8 @@ void BM_plane_solve(benchmark::State& state) {
 }
 
 void BM_plane_solve_elastic(benchmark::State& state) {
-  const viscoroll::PlaneSolver<double, viscoroll::Elastic<double>> solver(viscoroll::Elastic<double>(1.0, 0.5));
+  const viscoroll::PlaneSolver<double, viscoroll::Elastic<double>> solver(
+      viscoroll::Elastic<double>(1.0, 0.5));
   const viscoroll::PlaneScene<double> scene{1.0, 1.0, 1.0};
   for (auto _ : state) benchmark::DoNotOptimize(solver.solve(scene).a);
 }
@@ -32,7 +34,8 @@ void BM_plane_pressure_point(benchmark::State& state) {
 
 void BM_plane_peak(benchmark::State& state) {
   const double vtau = double(state.range(0)) / 100;
-  const auto s = viscoroll::PlaneSolverD(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, vtau)).solve({1.0, 1.0, 1.0});
+  const auto s = viscoroll::PlaneSolverD(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, vtau))
+                     .solve({1.0, 1.0, 1.0});
   for (auto _ : state) benchmark::DoNotOptimize(s.peak().pressure);
 }
 

@@ -9,27 +9,51 @@
 //   100 asymptotic.
 #include <benchmark/benchmark.h>
 
+#include <string>
 #include <viscoroll/special/bessel_ratio.hpp>
 #include <viscoroll/special/struve_neumann.hpp>
 
 namespace {
 
-#define VISCOROLL_SPECIAL_FUNCTOR(Name, function) \
-  struct Name {                                   \
-    template <class Real>                         \
-    static Real eval(Real x) {                    \
-      return viscoroll::special::function(x);     \
-    }                                             \
+/// The method a Bessel function uses at x (bessel_ratio.hpp): Boost below x_T, Hankel's
+/// expansion (DLMF 10.40.1-2) from x_T on; I2/I0 sums its power series below 4.
+template <class Real>
+std::string bessel_method(Real x, bool i2_series) {
+  if (i2_series && x < viscoroll::detail::bessel_i2_series_limit<Real>()) return "power series";
+  if (x < viscoroll::detail::bessel_asymptotic_threshold<Real>()) return "Boost";
+  return "Hankel expansion";
+}
+
+/// The method H_0 - Y_0 uses at x (struve_neumann.hpp): series (DLMF 11.2.1, 10.8.2) for
+/// x <= 1, Gauss-Legendre on the Laplace integral (DLMF 11.5.2) below x_S, asymptotic series
+/// (DLMF 11.6.1) from x_S on.
+template <class Real>
+std::string struve_method(Real x) {
+  if (x <= viscoroll::detail::struve_series_limit<Real>()) return "power series";
+  if (x < viscoroll::detail::struve_asymptotic_threshold<Real>()) return "Gauss-Legendre";
+  return "asymptotic series";
+}
+
+#define VISCOROLL_SPECIAL_FUNCTOR(Name, function, method) \
+  struct Name {                                           \
+    template <class Real>                                 \
+    static Real eval(Real x) {                            \
+      return viscoroll::special::function(x);             \
+    }                                                     \
+    template <class Real>                                 \
+    static std::string method_at(Real x) {                \
+      return method;                                      \
+    }                                                     \
   };
 
-VISCOROLL_SPECIAL_FUNCTOR(I1OverI0, bessel_i1_over_i0)
-VISCOROLL_SPECIAL_FUNCTOR(I2OverI0, bessel_i2_over_i0)
-VISCOROLL_SPECIAL_FUNCTOR(K1OverK0, bessel_k1_over_k0)
-VISCOROLL_SPECIAL_FUNCTOR(I0Scaled, bessel_i0_scaled)
-VISCOROLL_SPECIAL_FUNCTOR(I1Scaled, bessel_i1_scaled)
-VISCOROLL_SPECIAL_FUNCTOR(K0Scaled, bessel_k0_scaled)
-VISCOROLL_SPECIAL_FUNCTOR(K1Scaled, bessel_k1_scaled)
-VISCOROLL_SPECIAL_FUNCTOR(StruveH0MinusY0, struve_h0_minus_y0)
+VISCOROLL_SPECIAL_FUNCTOR(I1OverI0, bessel_i1_over_i0, bessel_method(x, false))
+VISCOROLL_SPECIAL_FUNCTOR(I2OverI0, bessel_i2_over_i0, bessel_method(x, true))
+VISCOROLL_SPECIAL_FUNCTOR(K1OverK0, bessel_k1_over_k0, bessel_method(x, false))
+VISCOROLL_SPECIAL_FUNCTOR(I0Scaled, bessel_i0_scaled, bessel_method(x, false))
+VISCOROLL_SPECIAL_FUNCTOR(I1Scaled, bessel_i1_scaled, bessel_method(x, false))
+VISCOROLL_SPECIAL_FUNCTOR(K0Scaled, bessel_k0_scaled, bessel_method(x, false))
+VISCOROLL_SPECIAL_FUNCTOR(K1Scaled, bessel_k1_scaled, bessel_method(x, false))
+VISCOROLL_SPECIAL_FUNCTOR(StruveH0MinusY0, struve_h0_minus_y0, struve_method(x))
 
 #undef VISCOROLL_SPECIAL_FUNCTOR
 
@@ -43,6 +67,8 @@ void BM_special(benchmark::State& state) {
     Real value = Function::eval(x);
     benchmark::DoNotOptimize(value);
   }
+  state.SetLabel("x = " + std::to_string(static_cast<double>(x)).substr(0, 6) + ": " +
+                 Function::method_at(x));
 }
 
 #define VISCOROLL_BENCH_SPECIAL(Function)               \

@@ -8,6 +8,8 @@
 // leaves one equation for A = a / a0, a0 the long-term Hertz half width (docs/theory.md, (P5)):
 //   A^2 + 2 f/(1+f) (V tau / a0) A R = 1,   R = r_I r_K / (r_I + r_K),
 //   r_I = I1(alpha)/I0(alpha), alpha = (1+f) a/(V tau);  r_K = K1(beta)/K0(beta), beta = a/(V tau).
+// An elastic material (if constexpr), V tau <= eps a0 and the glassy limit (V tau >~ 40 a0/eps in
+// double, or +inf) are Hertz's closed form with no Bessel work (docs/theory.md, (P6)).
 #pragma once
 
 #include <boost/math/tools/roots.hpp>
@@ -58,7 +60,7 @@ struct PlaneSolution {
   Real b;            ///< offset of the contact centre ahead of the cylinder axis (Eq. 29)
   Real g;            ///< G of Eqs. (33), (36)
   Real a_long_term;  ///< a0: the V tau -> 0 (long-term Hertz) half width, 4 c (1+f) W / C1 = a0^2
-  Real f0;           ///< F0 = int p* dx = c (1 + f) W (Eq. 52)
+  Real f0;           ///< F0 = int p* dx = c (1 + f) W (Eq. 52); c W in the glassy closed form
   Real q;            ///< Q of Eq. (46)
   Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51)
   bool converged;    ///< the root for a met the tolerance within the allowed iterations
@@ -99,11 +101,16 @@ class PlaneSolver {
     // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
     const Real a0 = sqrt(4 * c * (1 + f) * scene.load / scene.c1);
     if constexpr (Material::is_viscoelastic) {
-      if (vtau > 0 && f > 0) return rolling(scene, c, f, vtau, a0);
+      if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0) {
+        if (!glassy(vtau, f, a0)) return rolling(scene, c, f, vtau, a0);
+        // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
+        const Real a = sqrt(4 * c * scene.load / scene.c1);
+        return static_solution(scene, a, a0, c, Real(0));
+      }
     }
-    // Static or elastic: Hertz with the long-term compliance, no Bessel work.
-    return Solution{a0, Real(0), Real(0), a0, scene.c1 * a0 * a0 / 4, Real(0), Real(0), true, 0,
-                    Real(0), StripPressure<Real, Quadrature>(scene.c1, a0, Real(0), Real(0), Real(0), f, c)};
+    // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic: Hertz
+    // with the long-term compliance, no Bessel work.
+    return static_solution(scene, a0, a0, c, f);
   }
 
  private:
@@ -158,6 +165,27 @@ class PlaneSolver {
     const Real xbar = strip_first_moment(a, b, g, vtau, f, r_i, delta) / (a0 * a0);
     return Solution{a, b, g, a0, f0, q, scene.c1 * xbar, converged, iterations, residual,
                     StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
+  }
+
+  /// Hertz's strip of half width a under the compliance (1 + f) c: b = G = Q = chi = 0,
+  /// F0 = C1 a^2 / 4 (Eq. 33 with G = 0). The glassy limit is reported in this form with f = 0
+  /// (the instantaneous compliance alone), as LineSolver reports its glassy closed form.
+  static Solution static_solution(const PlaneScene<Real>& scene, Real a, Real a0, Real c, Real f) {
+    const StripPressure<Real, Quadrature> strip(scene.c1, a, Real(0), Real(0), Real(0), f, c);
+    return Solution{a, Real(0), Real(0), a0, scene.c1 * a * a / 4, Real(0), Real(0), true, 0,
+                    Real(0), strip};
+  }
+
+  /// True when the glassy closed form is within eps of the rolling solution: by (P6) the
+  /// departures are b/a0 ~ (u/2) (ln(2 sqrt(1 + f)/u) - gamma) and chi/(C1 a0) ~ b/a0 +
+  /// u f/(8 (1 + f)), u = a0 / V tau, while a moves by O(u^2 ln u) only; the bound below,
+  /// u (ln(2/u) + ln(1 + f)/2 + 1) <= eps, covers both (V tau >~ 40 a0 / eps in double).
+  static bool glassy(Real vtau, Real f, Real a0) {
+    using std::log;
+    const Real u = a0 / vtau;
+    if (u == 0) return true;  // V tau overflowed to +inf
+    if (!(u < std::numeric_limits<Real>::epsilon())) return false;
+    return u * (log(2 / u) + log(1 + f) / 2 + 1) <= std::numeric_limits<Real>::epsilon();
   }
 
   Material material_;

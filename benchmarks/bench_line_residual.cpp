@@ -1,0 +1,85 @@
+// One evaluation of the line solver's least-squares residual (LineResidual::operator()) at the
+// paper's scene: f = 9, a 5:1 static contact (C2/C1 = (ln 20 - 1)/25, a0 = 1), V tau / a0 = 1,
+// for `terms` N = 2, 4, 8, 16 (N + 1 collocation points; 2N + 3 equations). Each evaluation
+// assembles (34) (finite part of F0, Eqs. (22)-(24)), the leading-edge condition (L6) of
+// docs/theory.md section 4 (the extended operator (26), (41) and its eta-integral, the Bessel
+// terms of (42)) at every collocation point, and the load (47), with G, F0, Q from (36), (33),
+// (46) at every quadrature node. The unknowns are the converged N = 4 solution, re-expanded to
+// N terms. The Levenberg-Marquardt iteration costs 2N + 4 such evaluations per step.
+// Counters: equations, unknowns, max |r| at the point (to show where it was evaluated).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <viscoroll/viscoroll.hpp>
+
+namespace {
+
+template <class Real>
+viscoroll::LineScene<Real> paper_scene(Real f, Real c) {
+  using std::log;
+  return {Real(1), (log(Real(20)) - 1) / 25, 5 / (3 * (1 + f) * c), Real(1)};
+}
+
+template <class Real>
+viscoroll::StandardLinearSolid<Real> paper_material() {
+  return {Real(1), Real(0.5), Real(9), Real(1)};  // mu_D, nu, f, tau; speed 1: V tau = 1
+}
+
+/// The converged N = 4 line solution of the paper's scene, computed once per scalar type.
+template <class Real>
+const viscoroll::LineSolution<Real, viscoroll::GaussLegendre<Real, 12>>& reference_solution() {
+  static const auto solution = [] {
+    viscoroll::LineOptions options;
+    options.terms = 4;
+    const auto material = paper_material<Real>();
+    return viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>>(material, options)
+        .solve(paper_scene(Real(9), material.instantaneous_compliance()));
+  }();
+  return solution;
+}
+
+template <class Real>
+void BM_line_residual(benchmark::State& state) {
+  const int terms = static_cast<int>(state.range(0));
+  viscoroll::LineOptions options;
+  options.terms = terms;
+  const auto material = paper_material<Real>();
+  const viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(material, options);
+  const auto residual = solver.residual(paper_scene(Real(9), material.instantaneous_compliance()));
+  const auto& start = reference_solution<Real>();
+  const auto x = residual.pack(start.shape, start.d);
+  typename decltype(residual)::Vector r(residual.equations());
+  bool ok = residual(x, r);
+  for (auto _ : state) {
+    ok = residual(x, r);
+    benchmark::DoNotOptimize(r.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(ok ? "exterior form (L6), at the N = 4 solution" : "residual undefined");
+  state.counters["terms"] = terms;
+  state.counters["equations"] = residual.equations();
+  state.counters["unknowns"] = residual.unknowns();
+  state.counters["max_abs_r"] = static_cast<double>(r.cwiseAbs().maxCoeff());
+}
+
+}  // namespace
+
+BENCHMARK_TEMPLATE(BM_line_residual, float)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_line_residual, double)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_line_residual, long double)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond);

@@ -1,0 +1,20 @@
+// The counterpart of umbrella_header.test.cpp: with the optional headers included, the same
+// probes report them, so the umbrella header's checks are not vacuous.
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <viscoroll/bem/bem_solver.hpp>
+#include <viscoroll/viscoroll.hpp>
+// The probe goes after the headers under test.
+#include <catch2/catch.hpp>
+
+#include "optional_parts_probe.hpp"
+
+static_assert(viscoroll_needs::bem_declared);
+static_assert(viscoroll_needs::eigen_fft_included);
+static_assert(viscoroll_needs::multiprecision_included);
+
+TEST_CASE("needs: the probes see the BEM, the FFT and multiprecision when they are included",
+          "[needs]") {
+  CHECK(viscoroll_needs::bem_declared);
+  CHECK(viscoroll_needs::eigen_fft_included);
+  CHECK(viscoroll_needs::multiprecision_included);
+}
