@@ -17,8 +17,8 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
@@ -27,12 +27,28 @@ namespace viscoroll {
 
 /// The first moment of a strip's pressure in the cancellation-free form (P7) of docs/theory.md:
 ///   4 c (1 + f) int x p dx / C1 = 2 b G + V tau (f a^2 I2/I0 + 2 a b I1/I0) / (1 + f),
-/// r_i = I1/I0(alpha), r_2 = I2/I0(alpha), alpha = (1 + f) a / V tau (every term is non-negative when
-/// b, G >= 0; the paper's (54) subtracts nearly equal terms as V tau grows). Shared by the plane
-/// solver (chi = C1 times this over a0^2) and, strip by strip, the line solver.
+/// r_i = I1/I0(alpha), r_2 = I2/I0(alpha), alpha = (1 + f) a / V tau (every term is non-negative
+/// when b, G >= 0; the paper's (54) subtracts nearly equal terms as V tau grows). Shared by the
+/// plane solver (chi = C1 times this over a0^2) and, strip by strip, the line solver.
 template <RealScalar Real>
 Real strip_first_moment(Real a, Real b, Real g, Real vtau, Real f, Real r_i, Real r_2) {
   return 2 * b * g + vtau * (f * a * a * r_2 + 2 * a * b * r_i) / (1 + f);
+}
+
+/// True when a strip of long-term half width a0 at V tau is its glassy limit (Hertz with the
+/// instantaneous compliance) to within eps: by (P6) the departures are b/a0 ~ (u/2) (ln(2
+/// sqrt(1 + f)/u) - gamma) and chi/(C1 a0) ~ b/a0 + u f/(8 (1 + f)), u = a0 / V tau, while a
+/// moves by O(u^2 ln u) only; u (ln(2/u) + ln(1 + f)/2 + 1) <= eps covers both (V tau >~ 40 a0 /
+/// eps in double). V tau = +inf (an overflowed product) is glassy. Shared by the plane and the
+/// line solver (whose strips are the plane's at leading order in a/l).
+template <RealScalar Real>
+bool strip_is_glassy(Real vtau, Real f, Real a0) {
+  using std::log;
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  const Real u = a0 / vtau;
+  if (u == 0) return true;
+  if (!(u < eps)) return false;
+  return u * (log(2 / u) + log(1 + f) / 2 + 1) <= eps;
 }
 
 /// Location and value of the largest pressure on a strip.
@@ -48,7 +64,7 @@ struct PressurePeak {
 /// Eq. (35) falls by at most e^8; with GaussLegendre<Real, 24> each panel is exact to about 1e-39
 /// relative (docs/theory.md), so the reconstruction is limited by rounding, not by the rule.
 template <RealScalar Real, class Quadrature>
-  requires QuadratureRule<Quadrature, Real>
+requires QuadratureRule<Quadrature, Real>
 class StripPressure {
  public:
   /// c1: curvature C1; a, b, g: half width, offset and G(y) of the strip; vtau: V tau >= 0;
@@ -109,7 +125,8 @@ class StripPressure {
     const Real layer = vtau_ / (1 + f_);
     if (vtau_ > 0 && layer < a_)
       for (Real m = Real(1) / 128; m <= 64; m *= 2)
-        if (leading_edge() - m * layer > lo && leading_edge() - m * layer < hi) xs.push_back(leading_edge() - m * layer);
+        if (leading_edge() - m * layer > lo && leading_edge() - m * layer < hi)
+          xs.push_back(leading_edge() - m * layer);
     std::sort(xs.begin(), xs.end());
     std::size_t best = 0;
     Real best_p = pressure(xs[0]);
@@ -125,13 +142,15 @@ class StripPressure {
         std::uintmax_t iterations = 200;
         const auto root = boost::math::tools::toms748_solve(
             [this](Real x) { return pressure_slope(x); }, left, right, s_left, s_right,
-            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3), iterations);
+            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3),
+            iterations);
         const Real x = (root.first + root.second) / 2, p = pressure(x);
         if (p >= best_p) return {x, p};
       }
     }
-    const auto found = boost::math::tools::brent_find_minima(
-        [this](Real x) { return -pressure(x); }, left, right, std::numeric_limits<Real>::digits / 2);
+    const auto found =
+        boost::math::tools::brent_find_minima([this](Real x) { return -pressure(x); }, left, right,
+                                              std::numeric_limits<Real>::digits / 2);
     if (-found.second >= best_p) return {found.first, -found.second};
     return {xs[best], best_p};
   }

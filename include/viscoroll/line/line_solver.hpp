@@ -7,8 +7,8 @@
 // (line_shape.hpp), l and d by a Levenberg-Marquardt iteration (a damped Gauss-Newton method with
 // Marquardt's diagonal scaling; the system is square, so a converged solution has a zero residual
 // to rounding). The static scene (V tau = 0), the elastic material (f = 0) and the glassy limit
-// (V tau beyond 1/eps half widths) are Kalker's closed form (static_line_contact.hpp) with the
-// long-term or the instantaneous compliance: no Bessel work.
+// (V tau beyond ~40/eps half widths, strip_is_glassy) are Kalker's closed form
+// (static_line_contact.hpp) with the long-term or the instantaneous compliance: no Bessel work.
 #pragma once
 
 #include <Eigen/Dense>
@@ -173,8 +173,8 @@ class LineSolver {
     const Real eps = std::numeric_limits<Real>::epsilon();
     if constexpr (Material::is_viscoelastic) {
       if (f > 0 && vtau > 0) {
-        if (vtau * eps > slow.a0) {
-          // Glassy limit: the instantaneous compliance, to O(a0 / V tau ln(V tau / a0)) < eps.
+        if (strip_is_glassy(vtau, f, slow.a0)) {
+          // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
           const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
           // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
           return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");

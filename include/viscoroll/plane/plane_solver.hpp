@@ -48,8 +48,8 @@ struct PlaneOptions {
   int max_iterations = 100;
 
   void validate() const {
-    detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations", max_iterations,
-                    "1 <= max_iterations <= 100000");
+    detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations",
+                    max_iterations, "1 <= max_iterations <= 100000");
   }
 };
 
@@ -79,7 +79,7 @@ struct PlaneSolution {
 /// Solver of the plane problem over a scalar, a constitutive model and a quadrature rule (the
 /// rule serves the pressure reconstruction (35); a, b, G and chi are closed-form given a).
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 24>>
-  requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
+requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 class PlaneSolver {
  public:
   using Solution = PlaneSolution<Real, Quadrature>;
@@ -145,8 +145,8 @@ class PlaneSolver {
       iterations = static_cast<int>(max_iter);
       A = (bracket.first + bracket.second) / 2;
       using std::abs;
-      converged = abs(bracket.second - bracket.first) <=
-                  8 * std::numeric_limits<Real>::epsilon() * abs(A);
+      converged =
+          abs(bracket.second - bracket.first) <= 8 * std::numeric_limits<Real>::epsilon() * abs(A);
     }
     using std::abs;
     const Real residual = abs(h(A));
@@ -157,13 +157,22 @@ class PlaneSolver {
     // (P4): b from (36) = leading-edge condition; then G = a b K1/K0.
     const Real b = vtau * creep * r_i / (r_i + r_k);
     const Real g = a * b * r_k;
-    const Real f0 = scene.c1 * a0 * a0 / 4;                       // Eq. (33) with (52)
-    const Real q = (1 - b / vtau) * scene.c1 * g / 2;              // Eq. (46)
+    const Real f0 = scene.c1 * a0 * a0 / 4;            // Eq. (33) with (52)
+    const Real q = (1 - b / vtau) * scene.c1 * g / 2;  // Eq. (46)
     // (P7): chi = C1 xbar, xbar = [2 b G + V tau (f a^2 I2/I0 + 2 a b r_I) / (1+f)] / a0^2,
     // every term non-negative (the paper's (54) cancels as V tau grows).
     const Real delta = bessel_i2_over_i0(alpha);
     const Real xbar = strip_first_moment(a, b, g, vtau, f, r_i, delta) / (a0 * a0);
-    return Solution{a, b, g, a0, f0, q, scene.c1 * xbar, converged, iterations, residual,
+    return Solution{a,
+                    b,
+                    g,
+                    a0,
+                    f0,
+                    q,
+                    scene.c1 * xbar,
+                    converged,
+                    iterations,
+                    residual,
                     StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
   }
 
@@ -172,21 +181,12 @@ class PlaneSolver {
   /// (the instantaneous compliance alone), as LineSolver reports its glassy closed form.
   static Solution static_solution(const PlaneScene<Real>& scene, Real a, Real a0, Real c, Real f) {
     const StripPressure<Real, Quadrature> strip(scene.c1, a, Real(0), Real(0), Real(0), f, c);
-    return Solution{a, Real(0), Real(0), a0, scene.c1 * a * a / 4, Real(0), Real(0), true, 0,
-                    Real(0), strip};
+    return Solution{a,    Real(0), Real(0), a0,   scene.c1 * a * a / 4, Real(0), Real(0),
+                    true, 0,       Real(0), strip};
   }
 
-  /// True when the glassy closed form is within eps of the rolling solution: by (P6) the
-  /// departures are b/a0 ~ (u/2) (ln(2 sqrt(1 + f)/u) - gamma) and chi/(C1 a0) ~ b/a0 +
-  /// u f/(8 (1 + f)), u = a0 / V tau, while a moves by O(u^2 ln u) only; the bound below,
-  /// u (ln(2/u) + ln(1 + f)/2 + 1) <= eps, covers both (V tau >~ 40 a0 / eps in double).
-  static bool glassy(Real vtau, Real f, Real a0) {
-    using std::log;
-    const Real u = a0 / vtau;
-    if (u == 0) return true;  // V tau overflowed to +inf
-    if (!(u < std::numeric_limits<Real>::epsilon())) return false;
-    return u * (log(2 / u) + log(1 + f) / 2 + 1) <= std::numeric_limits<Real>::epsilon();
-  }
+  /// The glassy closed form is within eps of the rolling solution (strip_is_glassy, (P6)).
+  static bool glassy(Real vtau, Real f, Real a0) { return strip_is_glassy(vtau, f, a0); }
 
   Material material_;
   PlaneOptions options_;
