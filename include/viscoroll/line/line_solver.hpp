@@ -310,6 +310,7 @@ class LineSolver {
     Vector trial(n), rt(res.equations());
     Outcome out;
     bool fresh = false;
+    int stalled = 0;
     const auto difference_jacobian = [&]() {
       for (int j = 0; j < n; ++j) {
         const Real h = sqrt(eps) * std::max(Real(1), Real(abs(x[j])));
@@ -369,6 +370,7 @@ class LineSolver {
       }
       // Broyden's update with the accepted step s and the change of residual rt - r.
       const bool newton_step = fresh;
+      const Real reduction = (cost - rt.squaredNorm()) / cost;
       const Real ss = step.squaredNorm();
       if (ss > 0) jac += ((rt - r) - jac * step) * (step.transpose() / ss);
       fresh = false;
@@ -398,6 +400,26 @@ class LineSolver {
         out.reason = "converged (residual at rounding level)";
         ++out.iterations;
         return out;
+      }
+      // Stagnation (MINPACK's ftol test): a step that lowers |r|^2 by less than sqrt(eps) of
+      // itself. From an updated Jacobian, refresh it; from a fresh one three times running, the
+      // iterate sits at a least-squares minimum with no root of the equations near it.
+      if (rmax > residual_tol && reduction < sqrt(eps)) {
+        if (!newton_step) {
+          if (!fresh && !difference_jacobian()) {
+            out.undefined = true;
+            out.reason = "Jacobian undefined";
+            return out;
+          }
+        } else if (++stalled >= 3) {
+          out.reason =
+              "stalled at a least-squares minimum, no root near (|r|^2 falls by < sqrt(eps) per "
+              "step)";
+          ++out.iterations;
+          return out;
+        }
+      } else {
+        stalled = 0;
       }
     }
     return out;
