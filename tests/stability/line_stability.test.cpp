@@ -110,21 +110,20 @@ long double check_fields(const Solution& s, Real p_tolerance) {
 }
 
 /// int F0 dy over (-l, l) relative to (1 + f) c P (Eq. 47 with 52), y = l sin(theta), adaptive
-/// Gauss-Kronrod in double (tolerance eps^(2/3) = 3.7e-11; the substitution absorbs the
+/// Gauss-Kronrod in the scalar (tolerance eps^(2/3): 3.7e-11 in double, 2.4e-5 in float, whose
+/// F0 carries rounding noise that a tighter rule would chase; the substitution absorbs the
 /// square-root ends).
 template <class Real, class Solution>
-double load_error(const Solution& s, const Cell<Real>& cell) {
-  const double half_pi = std::acos(-1.0) / 2, l = static_cast<double>(s.l());
-  const double integral =
-      2 * l *
-      viscoroll::AdaptiveGaussKronrod<double>::integrate(
-          [&](double th) {
-            return static_cast<double>(s.f0(Real(l * std::sin(th)))) * std::cos(th);
-          },
-          0.0, half_pi);
-  const double expected = static_cast<double>(
-      (1 + exact<Real>(cell.f)) * cell.material().instantaneous_compliance() * cell.load());
-  return std::abs(integral / expected - 1);
+long double load_error(const Solution& s, const Cell<Real>& cell) {
+  using std::cos;
+  using std::sin;
+  const Real half_pi = boost::math::constants::half_pi<Real>(), l = s.l();
+  const Real integral = 2 * l *
+                        viscoroll::AdaptiveGaussKronrod<Real>::integrate(
+                            [&](Real th) { return s.f0(l * sin(th)) * cos(th); }, Real(0), half_pi);
+  const Real expected =
+      (1 + exact<Real>(cell.f)) * cell.material().instantaneous_compliance() * cell.load();
+  return rel(integral, static_cast<long double>(expected));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -226,8 +225,9 @@ Outcome<Real> check_iterated(const Cell<Real>& cell, int terms) {
   const long double pmin = check_fields(s, Real(1e-6));
   // (47): the residual's load row is met to the residual; the adaptive rule to 3.7e-11; F0 is
   // evaluated to a few eps of the scalar (Bessel ratios <= 2 eps).
-  const double le = load_error(s, cell);
-  CHECK(le <= 4 * static_cast<double>(s.residual) + 1e-10 + 64 * static_cast<double>(eps<Real>()));
+  const long double le = load_error(s, cell);
+  const long double quadrature = viscoroll::AdaptiveGaussKronrod<Real>::tolerance();
+  CHECK(le <= 4 * static_cast<long double>(s.residual) + 2 * quadrature + 64 * eps<Real>());
   // The limits (ERRATA.md): V tau -> 0 the static contact of the long-term compliance, departing
   // by O(V tau/a0) (docs/line-solver.md, bound V tau/a0); chi -> C1 V tau f/(1+f) to O(V^2)
   // (bound 10 V tau/a0 relative). V tau -> inf the glassy contact, a, l by (1+f)^(-1/3), d by
@@ -261,19 +261,25 @@ Outcome<Real> check_iterated(const Cell<Real>& cell, int terms) {
     CHECK(ed <= 6 * bound);
   } else if (cell.v == 1 && cell.f == 9 && cell.rho == 5 && terms == 4) {
     // docs/line-solver.md, the paper's scene at V tau = a0: the N = 4 row (printed to 7-9
-    // digits) and its distance to N = 32 (a(0) 4.3e-3, l 1.1e-2, d 1.1e-5, chi 9.5e-5 relative).
-    CHECK(rel(s.a(Real(0)), 0.6077585L) <= 1e-6L);
-    CHECK(rel(s.b(Real(0)), 0.3073617L) <= 1e-6L);
-    CHECK(rel(s.l(), 4.614101L) <= 1e-6L);
-    CHECK(rel(s.d, 1.35853272L) <= 1e-7L);
-    CHECK(rel(s.chi, 0.41135425L) <= 1e-7L);
+    // digits) and its distance to N = 32 (a(0) 4.34e-3, l 1.122e-2, d 1.37e-5, chi 9.1e-5
+    // relative).
+    // Printed precision, plus what the scalar's solution may differ from the exact discrete one
+    // (50 residuals, compare_with_double below, and rounding).
+    const long double own = 50 * static_cast<long double>(s.residual) + 64 * eps<Real>();
+    CHECK(rel(s.a(Real(0)), 0.6077585L) <= 1e-6L + own);
+    CHECK(rel(s.b(Real(0)), 0.3073617L) <= 1e-6L + own);
+    CHECK(rel(s.l(), 4.614101L) <= 1e-6L + own);
+    CHECK(rel(s.d, 1.35853272L) <= 1e-7L + own);
+    CHECK(rel(s.chi, 0.41135425L) <= 1e-7L + own);
     ea = rel(s.a(Real(0)), 0.6051346L);
     el = rel(s.l(), 4.562886L);
     ed = rel(s.d, 1.35855128L);
-    CHECK(ea <= 4.4e-3L);
-    CHECK(el <= 1.2e-2L);
-    CHECK(ed <= 1.2e-5L);
-    CHECK(rel(s.chi, 0.41139166L) <= 1e-4L);
+    // Bounds: those distances, rounded up in their second digit.
+    bound = 4.4e-3L;
+    CHECK(ea <= bound);
+    CHECK(el <= 1.13e-2L);
+    CHECK(ed <= 1.4e-5L);
+    CHECK(rel(s.chi, 0.41139166L) <= 9.2e-5L);
   }
   // Between the two limits: the contact shrinks with speed, never below a third of the glassy
   // width (a(0) dips under its glassy value at V tau ~ 5 a0: 0.394 against 0.464, docs/bem.md).
