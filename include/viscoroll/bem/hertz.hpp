@@ -70,6 +70,13 @@ HertzContact<Real> hertz_contact(Real c1, Real c2, Real compliance, Real load) {
   viscoroll::detail::require_positive("c2", c2);
   viscoroll::detail::require_positive("compliance", compliance);
   viscoroll::detail::require_positive("load", load);
+  if constexpr (std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits) {
+    // float: near the bracket's end k' = 1e-6, e = sqrt((1 - k')(1 + k')) rounds to 1 and K(e)
+    // overflows (boost::math::overflow_error, measured for l/a >= 200); solve in double, round
+    // once.
+    const auto h = hertz_contact<double>(double(c1), double(c2), double(compliance), double(load));
+    return {Real(h.a), Real(h.b), Real(h.d), Real(h.p0)};
+  }
   const Real compliance_load = compliance * load;
   const bool swap = c2 > c1;  // the short semi-axis lies along the larger curvature
   const Real big = swap ? c2 : c1, ratio = swap ? c1 / c2 : c2 / c1;
