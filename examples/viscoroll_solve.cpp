@@ -8,7 +8,8 @@
 // --method bem: the 3-D boundary-element solver (--c2 required, --load the total load, --grid N
 // elements per semi-axis of the static long-term Hertz ellipse, default 16); each line carries
 // a0 = a(0), b0 = b(0), l, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason,
-// iterations (active set), gmres_iterations and residual. docs/bem.md.
+// iterations (active set), gmres_iterations, residual and warnings. docs/bem.md. Warnings of
+// either method also go to stderr, one per line; they do not change the exit status.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -85,6 +86,16 @@ std::string json_string(std::string_view text) {
   return out + "\"";
 }
 
+/// A JSON array of strings.
+std::string json_strings(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    if (k) out += ',';
+    out += json_string(items[k]);
+  }
+  return out + "]";
+}
+
 /// --grid for the line method: LineOptions::terms, default 6.
 int line_terms(const SolveOptions& o) {
   constexpr long default_terms = 6, max_terms = 64;
@@ -123,12 +134,7 @@ int run_line(const SolveOptions& o) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     all_converged = all_converged && s.converged;
-    std::string warnings = "[";
-    for (std::size_t k = 0; k < s.warnings.size(); ++k) {
-      if (k) warnings += ',';
-      warnings += json_string(s.warnings[k]);
-    }
-    warnings += "]";
+    const std::string warnings = json_strings(s.warnings);
     std::cout << "{\"method\":\"line\",\"tau\":" << number(o.tau[i])
               << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << json_number(s.a(0.0))
               << ",\"b0\":" << json_number(s.b(0.0)) << ",\"l\":" << json_number(s.l())
@@ -202,7 +208,11 @@ int run_bem(const SolveOptions& o) {
               << ",\"iterations\":" << s.iterations
               << ",\"gmres_iterations\":" << s.krylov_iterations
               << ",\"residual\":" << json_number(s.residual) << ",\"grid\":" << options.grid
-              << ",\"cells\":" << s.grid.size() << ",\"reason\":" << json_string(s.reason) << "}\n";
+              << ",\"cells\":" << s.grid.size() << ",\"reason\":" << json_string(s.reason)
+              << ",\"warnings\":" << json_strings(s.warnings) << "}\n";
+    for (const auto& w : s.warnings)
+      std::cerr << "viscoroll-solve: warning: bem solution for tau = " << number(o.tau[i]) << ": "
+                << w << "\n";
     if (!s.converged)
       std::cerr << "viscoroll-solve: bem solution for tau = " << number(o.tau[i])
                 << " did not converge: " << s.reason << "\n";

@@ -214,6 +214,18 @@ TEST_CASE("bem: non-convergence is reported, inputs are validated", "[bem]") {
   bad.grid = 1;
   CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad),
                     Catch::Contains("grid = 1"));
+  // The grid's memory is bounded: (2 ceil(1.6 x 640) + 1)^2 = 4198401 > 2^22 cells at N = 640,
+  // 4190209 at N = 639.
+  bad = BemOptions{};
+  bad.grid = 640;
+  CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad),
+                    Catch::Contains("grid = 640") && Catch::Contains("4198401 cells"));
+  bad.grid = 639;
+  CHECK_NOTHROW(bad.validate());
+  bad.grid = 320;
+  bad.extent = 3.3;  // (2 x 1056 + 1)^2 = 4464769
+  CHECK_THROWS_WITH(bad.validate(),
+                    Catch::Contains("grid = 320") && Catch::Contains("4464769 cells"));
   bad = BemOptions{};
   bad.extent = 1.2;
   CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad),
@@ -244,7 +256,7 @@ TEST_CASE("bem: converges at every V tau from 0 to 1e12, d falling with speed", 
   const auto slow = hertz_contact(1.0, c2_paper, (1 + f) * c, load_paper);
   const auto fast = hertz_contact(1.0, c2_paper, c, load_paper);
   double previous = 2 * slow.d;
-  for (const double speed : {0.0, 1e-9, 1e-3, 0.1, 1.0, 10.0, 1e3, 1e6, 1e12}) {
+  for (const double speed : {0.0, 1e-9, 1e-3, 0.1, 1.0, 10.0, 1e3, 1e6, 1e12, 1e30}) {
     BemScene<double> at = scene;
     at.speed = speed;
     const auto sol = s.solve(at);
@@ -257,4 +269,28 @@ TEST_CASE("bem: converges at every V tau from 0 to 1e12, d falling with speed", 
   // the glassy contact's 0.46 N cells per semi-axis).
   const double ha = 1.0 / (6 * std::cbrt(1 + f));
   CHECK(std::abs(previous - fast.d) / fast.d <= ha * ha / 5);
+}
+
+TEST_CASE("bem: a glassy memory term is dropped, also when V tau overflows to +inf", "[bem]") {
+  // BemSolver::effective_terms: f (R/L)(ln(L/R) + 1) <= eps drops the term (R the grid's
+  // diagonal, L = V tau). V tau = 1e300 x 1e300 = +inf once hung the memory recurrence; it and
+  // V tau = 1e30 (dropped as well) must give the same operator on the same grid (sized by the
+  // long-term contact), hence the same solution, bit for bit.
+  const BemScene<double> scene{1.0, c2_paper, load_paper, 1e30};
+  BemScene<double> inf_scene = scene;
+  inf_scene.speed = 1e300;
+  const auto finite = solver(6).solve(scene);
+  const auto infinite = solver(6, 1e300).solve(inf_scene);
+  REQUIRE(std::isinf(inf_scene.speed * 1e300));
+  REQUIRE(finite.converged);
+  REQUIRE(infinite.converged);
+  CHECK(infinite.d == finite.d);
+  CHECK(infinite.a0 == finite.a0);
+  CHECK(infinite.chi == finite.chi);
+  // Both are the glassy contact: chi = 0 to the solve's tolerance, d = Hertz with the
+  // instantaneous compliance within the N = 6 discretisation error (previous test).
+  const auto fast = hertz_contact(1.0, c2_paper, c, load_paper);
+  const double ha = 1.0 / (6 * std::cbrt(1 + f));
+  CHECK(std::abs(infinite.d - fast.d) / fast.d <= ha * ha / 5);
+  CHECK(std::abs(infinite.chi) <= 1e-9);
 }

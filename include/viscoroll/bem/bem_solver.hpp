@@ -83,9 +83,18 @@ struct BemOptions {
   /// Right-precondition GMRES with the inverse of the continuum symbol (B11).
   bool precondition = true;
 
+  /// The most cells a grid may have, (2 ceil(extent grid) + 1)^2: the padded transforms then
+  /// take 4 x 16 bytes per cell per complex array (about 270 MB in double).
+  static constexpr long long max_cells = 1LL << 22;
+
   void validate() const {
     detail::require(grid >= 2 && grid <= 4096, "grid", grid, "2 <= grid <= 4096");
     detail::require(extent >= 1.6 && extent <= 64, "extent", extent, "1.6 <= extent <= 64");
+    const long long side = 2 * static_cast<long long>(std::ceil(extent * grid - 1e-9)) + 1;
+    detail::require(side * side <= max_cells, "grid", grid,
+                    "(2 ceil(extent grid) + 1)^2 <= 4194304 cells (grid <= 639 at extent = " +
+                        detail::format_value(extent) + ": " + std::to_string(side * side) +
+                        " cells asked)");
     detail::require(tolerance >= 1e-15 && tolerance <= 1e-3, "tolerance", tolerance,
                     "1e-15 <= tolerance <= 1e-3");
     detail::require(max_active_set_iterations >= 1 && max_active_set_iterations <= 100000,
@@ -162,7 +171,7 @@ class BemSolver {
     const auto hertz = long_term_hertz(scene);
     const auto grid = grid_for(scene);
     if (scene.profile) validate_profile(scene, grid);
-    const auto terms = bem::memory_terms_of(material_);
+    const auto terms = effective_terms(grid, scene.speed);
     const Real c = material_.instantaneous_compliance();
     const bem::InfluenceTable<Real> table(grid, c, terms, scene.speed);
     const bem::ConvolutionOperator<Real> op(table);
@@ -182,6 +191,30 @@ class BemSolver {
   }
 
  private:
+  /// The memory terms that act on the grid. A term whose memory length L = V tau_k is glassy on
+  /// it is dropped (it leaves the instantaneous response, exactly the limit L -> inf): its share
+  /// of the influence coefficients is f_k times the e^-eta average of 1/r over offsets x + L eta,
+  /// which for every offset within the grid's diagonal R is O((R/L)(ln(L/R) + 1)) of the elastic
+  /// coefficient at R; the term goes when f_k (R/L)(ln(L/R) + 1) <= eps. That covers L = +inf
+  /// (speed x tau overflowed), where the memory recurrence (B4)-(B5) has no scale to step with.
+  std::vector<PronyTerm<Real>> effective_terms(const bem::BemGrid<Real>& grid, Real speed) const {
+    using std::log;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real diagonal = sqrt(Real(grid.nx) * grid.hx * Real(grid.nx) * grid.hx +
+                               Real(grid.ny) * grid.hy * Real(grid.ny) * grid.hy);
+    std::vector<PronyTerm<Real>> kept;
+    for (const auto& t : bem::memory_terms_of(material_)) {
+      const Real length = speed * t.tau;
+      if (length > diagonal) {
+        const Real u = diagonal / length;
+        if (!(u > 0) || t.f * u * (log(1 / u) + 1) <= eps) continue;
+      }
+      kept.push_back(t);
+    }
+    return kept;
+  }
+
   /// A user profile must be finite at every cell centre: a NaN or infinite gap would enter the
   /// complementarity test unseen (a NaN gap is never negative) or the linear systems.
   static void validate_profile(const BemScene<Real>& scene, const bem::BemGrid<Real>& grid) {
