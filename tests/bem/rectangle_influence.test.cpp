@@ -2,6 +2,7 @@
 // its square-cell value and additivity, the far-field evaluation (B2) against (B1) and the
 // multipole expansion, and the memory coefficient (B3) by the recurrence (B4)-(B5) against a
 // brute-force tanh-sinh quadrature of (B3) split at the kinks.
+#include <algorithm>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -154,4 +155,25 @@ TEST_CASE("bem: memory coefficient limits", "[bem]") {
   };
   CHECK(std::abs(settled(1e10) - settled(1e12)) <= 1e-6);
   CHECK(std::abs(settled(1e8) - settled(1e12)) <= 1e-5);
+}
+
+TEST_CASE("bem: memory coefficients of a long memory", "[bem]") {
+  // docs/bem.md, "Glassy memory terms": for L >> the grid, M_L = (hx hy / L)(ln(L/h) + C) with
+  // C from the near field eta < h/L; BemSolver drops a term on the bound C <= 10 + |ln(hx/hy)|
+  // (measured C: 7.2 square, 8.8 at hy = hx/5, on the row Y = 0; less on the others).
+  const double hx = 1.0;
+  for (const double hy : {1.0, 0.2}) {
+    const double h = std::min(hx, hy), shape = 10 + std::abs(std::log(hx / hy));
+    for (const double length : {1e3, 1e6, 1e9, 1e12}) {
+      for (const int j : {0, 3, 10}) {
+        const auto row = memory_row<double>(20, j * hy, hx, hy, length);
+        double largest = 0;
+        for (const double m : row) largest = std::max(largest, m);
+        INFO("hy = " << hy << ", L = " << length << ", Y = " << j << " cells: max M_L " << largest);
+        CHECK(largest <= hx * hy / length * (std::log(length / h) + shape));
+        // and it is of that order: at least (hx hy / L) ln(L / max(h, |Y|)), the far part alone.
+        CHECK(largest >= hx * hy / length * std::log(length / std::max(h, j * hy)));
+      }
+    }
+  }
 }

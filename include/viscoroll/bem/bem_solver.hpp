@@ -192,23 +192,27 @@ class BemSolver {
 
  private:
   /// The memory terms that act on the grid. A term whose memory length L = V tau_k is glassy on
-  /// it is dropped (it leaves the instantaneous response, exactly the limit L -> inf): its share
-  /// of the influence coefficients is f_k times the e^-eta average of 1/r over offsets x + L eta,
-  /// which for every offset within the grid's diagonal R is O((R/L)(ln(L/R) + 1)) of the elastic
-  /// coefficient at R; the term goes when f_k (R/L)(ln(L/R) + 1) <= eps. That covers L = +inf
-  /// (speed x tau overflowed), where the memory recurrence (B4)-(B5) has no scale to step with.
+  /// it is dropped (it leaves the instantaneous response, exactly the limit L -> inf). Its
+  /// coefficients (B3) are at most (hx hy / L)(ln(L/h) + 10 + |ln(hx/hy)|), h = min(hx, hy)
+  /// (docs/bem.md, "Glassy memory terms"; measured constant 7.2 for square cells, 8.8 at 5:1:
+  /// tests/bem/rectangle_influence.test.cpp), against an elastic coefficient of at least about
+  /// hx hy / R at the grid's diagonal R; the term goes when f_k times their ratio is <= eps. That
+  /// covers L = +inf (speed x tau overflowed), where the recurrence (B4)-(B5) has no scale to
+  /// step with.
   std::vector<PronyTerm<Real>> effective_terms(const bem::BemGrid<Real>& grid, Real speed) const {
+    using std::abs;
     using std::log;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
     const Real diagonal = sqrt(Real(grid.nx) * grid.hx * Real(grid.nx) * grid.hx +
                                Real(grid.ny) * grid.hy * Real(grid.ny) * grid.hy);
+    const Real h = std::min(grid.hx, grid.hy), shape = 10 + abs(log(grid.hx / grid.hy));
     std::vector<PronyTerm<Real>> kept;
     for (const auto& t : bem::memory_terms_of(material_)) {
       const Real length = speed * t.tau;
       if (length > diagonal) {
         const Real u = diagonal / length;
-        if (!(u > 0) || t.f * u * (log(1 / u) + 1) <= eps) continue;
+        if (!(u > 0) || t.f * u * (log(length / h) + shape) <= eps) continue;
       }
       kept.push_back(t);
     }
