@@ -60,6 +60,7 @@ requires NodalQuadratureRule<Quadrature, Real>
 class LineResidual {
  public:
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 
   /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
   /// balances each block: (34) at N + 1 points and the load (47) fix the N coefficients of a, l and
@@ -153,26 +154,189 @@ class LineResidual {
 
   /// (34) and the leading-edge residual at one y, |y| < l (scaled as in operator()).
   bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle) const {
-    using std::exp;
-    using std::hypot;
+    const Real c1 = p_.c1;
+    const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
+    if (!(here.a > 0) || !(here.a + here.b > 0)) return false;
+    PointNodes nd;
+    point_nodes(s, y, here.a + here.b, nd);
+    std::vector<Real> df0(nd.yp.size()), dq(nd.yp.size());
+    for (std::size_t j = 0; j < nd.yp.size(); ++j) {
+      const auto there = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), p_.vtau, p_.f);
+      df0[j] = there.f0 - here.f0;
+      dq[j] = there.q - here.q;
+    }
+    const Real right = form_ == LeadingEdgeForm::exterior
+                           ? exterior_right(nd, dq, here.q, here.a + here.b, Real(1))
+                           : paper_right(s, y, here.a + here.b);
+    point_rows(d, y, here, nd, df0, right, r34, rle);
+    return true;
+  }
+
+  /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/line-solver.md,
+  /// "Jacobian"): the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
+  /// (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
+  /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), at nodes held
+  /// fixed in t = y/l. Only the kernels' dependence on the leading edge x0 = a + b and on l (a
+  /// few sums per point, no Bessel work) is differentiated by forward differences. Exterior form
+  /// (L6) only; returns false where operator() would, or for the paper's form.
+  bool jacobian(const Vector& x, Vector& r, Matrix& jac) const {
+    using std::abs;
     using std::log;
     using std::log1p;
     using std::sqrt;
-    const Real c1 = p_.c1, v = p_.vtau;
-    const auto here = strip_functions(c1, s.a(y), s.b(y), v, p_.f);
-    const Real a = here.a, b = here.b, x0 = a + b;
-    if (!(a > 0) || !(x0 > 0)) return false;
-    const Real d1 = s.l - y, d2 = s.l + y;
+    if (form_ != LeadingEdgeForm::exterior) return false;
+    const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
+    r.resize(equations());
+    jac.setZero(equations(), nu);
+    const LineShape<Real> s = shape(x);
+    const Real d = penetration(x), c1 = p_.c1, v = p_.vtau;
+    const Real scale34 = c1 * p_.a_ref * p_.a_ref;
+    const Real h = sqrt(std::numeric_limits<Real>::epsilon());
+    Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu);
+    for (int i = 0; i < m; ++i) {
+      const Real t = t_[i], y = t * s.l;
+      const auto here = strip_functions(c1, s.a(y), s.b(y), v, p_.f);
+      const Real a = here.a, b = here.b, x0 = a + b;
+      if (!(a > 0) || !(x0 > 0)) return false;
+      const auto dh = strip_derivatives(a, b);
+      shape_gradient(s, y, a, da_i, db_i);
+      df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
+      dq_i = dh.q_a * da_i + dh.q_b * db_i;
+      PointNodes nd;
+      point_nodes(s, y, x0, nd);
+      const std::size_t count = nd.yp.size();
+      std::vector<Real> df0(count), dq(count), wq(count);
+      dlhs.setZero();
+      dright.setZero();
+      Vector dan(nu), dbn(nu);
+      std::vector<StripDerivatives> dn(count);
+      std::vector<StripFunctions<Real>> there(count);
+      for (std::size_t j = 0; j < count; ++j) {
+        there[j] = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), v, p_.f);
+        df0[j] = there[j].f0 - here.f0;
+        dq[j] = there[j].q - here.q;
+      }
+      Real ends = 0;
+      const Real right = exterior_right(nd, dq, here.q, x0, Real(1), &wq, &ends);
+      Real r34 = 0, rle = 0;
+      point_rows(d, y, here, nd, df0, right, r34, rle);
+      r[i] = r34 + v / p_.a_ref * rle;
+      r[m + i] = rle;
+      // Node values: d F(y'_j) at fixed t'_j.
+      Real w0sum = 0, wqsum = 0;
+      for (std::size_t j = 0; j < count; ++j) {
+        if (!(there[j].a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
+        const auto dj = strip_derivatives(there[j].a, there[j].b);
+        shape_gradient(s, nd.yp[j], there[j].a, dan, dbn);
+        const Real w0 = nd.weight[j] / nd.dist[j];
+        dnode = dj.f0_a * dan + dj.f0_b * dbn;
+        dlhs += w0 * dnode;
+        dnode = dj.q_a * dan + dj.q_b * dbn;
+        dright += wq[j] * dnode;
+      }
+      for (std::size_t j = 0; j < count; ++j) {
+        w0sum += nd.weight[j] / nd.dist[j];
+        wqsum += wq[j];
+      }
+      dlhs -= w0sum * df0_i;
+      dright += (ends - wqsum) * dq_i;
+      // The kernels' dependence on x0 and on l (nodes fixed in t), by forward differences.
+      const Real hx = h * x0;
+      const Real r_x0 = (exterior_right(nd, dq, here.q, x0 + hx, Real(1)) - right) / hx;
+      const Real r_l = (exterior_right(nd, dq, here.q, x0, 1 + h) - right) / log1p(h);
+      dright += r_x0 * (da_i + db_i);
+      dright[lam] += r_l;
+      // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2], rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
+      const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
+      dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
+      dlhs[lam] += 2 * here.f0;
+      Vector drhs = -(c1 * a / 2) * da_i - c1 * (b - v) * db_i;
+      drhs[lam] -= p_.c2 * y * y;
+      drhs[del] += scale34;
+      const Vector dr34 = (dlhs - drhs) / scale34;
+      // Leading edge: rle = (bessel - right) / (slope a_ref).
+      const Real z = a / v, e0 = special::bessel_k0_scaled(z), e1 = special::bessel_k1_scaled(z);
+      const Real e0z = e0 - e1, e1z = e1 - e0 - e1 / z;
+      const Real ri = dh.ri, slope = c1 * a * (e1 + ri * e0);
+      const Real bessel_a = c1 * (b * e1 + a * b * e1z / v - dh.g_a * e0 - here.g * e0z / v);
+      const Real bessel_b = c1 * (a * e1 - dh.g_b * e0);
+      const Real slope_a =
+          c1 * (e1 + ri * e0) + c1 * a * (e1z / v + dh.ri_x * (1 + p_.f) / v * e0 + ri * e0z / v);
+      const Vector dbessel = bessel_a * da_i + bessel_b * db_i;
+      const Vector drle =
+          (dbessel - dright) / (slope * p_.a_ref) - (rle * slope_a / slope) * da_i;
+      jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
+      jac.row(m + i) = drle.transpose();
+    }
+    // Load (47), nodes fixed in y/l: d/d ln l of the integral is the integral itself.
+    std::vector<Real> nodes, weights;
+    detail::append_graded_nodes<Quadrature>(nodes, weights, s.l, s.l / 2, end_width(s, s.l));
+    Real sum = 0;
+    Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      const auto sf = strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), v, p_.f);
+      sum += weights[j] * sf.f0;
+      if (!(sf.a > 0)) continue;
+      const auto dj = strip_derivatives(sf.a, sf.b);
+      shape_gradient(s, nodes[j], sf.a, dan, dbn);
+      dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
+    }
+    r[2 * m] = 2 * sum / p_.load_target - 1;
+    jac.row(2 * m) = (2 * dsum / p_.load_target).transpose();
+    jac(2 * m, lam) = 2 * sum / p_.load_target;
+    for (int i = 0; i < r.size(); ++i)
+      if (!(boost::math::isfinite)(r[i])) return false;
+    return jac.allFinite();
+  }
 
-    // Nodes in t for the eta-integral of (L6), weights including e^-t.
-    std::vector<Real> tn, tw;
-    const Real c = std::min(Real(x0 / v), Real(1));
-    detail::append_graded_nodes<Quadrature>(tn, tw, t_max_, c / 2, t_max_);
-    std::vector<Real> xk(tn.size()), wk(tn.size());
-    Eigen::Array<Real, Eigen::Dynamic, 1> uk2(tn.size()), wu(tn.size());
-    for (std::size_t k = 0; k < tn.size(); ++k) {
-      xk[k] = x0 + v * tn[k];
-      wk[k] = v * tw[k] * exp(-tn[k]);
+ private:
+
+  /// The nodes of one collocation point: y' = y +- s on both sides (panels doubling from x0/2 and
+  /// halving toward the ends), and the t-nodes of the eta-integral of (L6).
+  struct PointNodes {
+    std::vector<Real> yp, dist, weight;  ///< node y', |y' - y| and weight, both sides
+    std::vector<Real> tn, tw;            ///< t-nodes on [0, -ln eps + 8] and weights (no e^-t)
+    Real d1 = 0, d2 = 0;                 ///< l - y, l + y
+  };
+
+  void point_nodes(const LineShape<Real>& s, Real y, Real x0, PointNodes& nd) const {
+    nd.d1 = s.l - y;
+    nd.d2 = s.l + y;
+    const Real c = std::min(Real(x0 / p_.vtau), Real(1));
+    detail::append_graded_nodes<Quadrature>(nd.tn, nd.tw, t_max_, c / 2, t_max_);
+    std::vector<Real> sn, sw;
+    for (int side = 0; side < 2; ++side) {
+      const Real len = side == 0 ? nd.d1 : nd.d2;
+      sn.clear();
+      sw.clear();
+      detail::append_graded_nodes<Quadrature>(sn, sw, len, x0 / 2, end_width(s, len));
+      for (std::size_t j = 0; j < sn.size(); ++j) {
+        const Real yp = side == 0 ? Real(y + sn[j]) : Real(y - sn[j]);
+        const Real dist = side == 0 ? Real(yp - y) : Real(y - yp);  // recomputed: rounding of yp
+        if (!(dist > 0)) continue;
+        nd.yp.push_back(yp);
+        nd.dist.push_back(dist);
+        nd.weight.push_back(sw[j]);
+      }
+    }
+  }
+
+  /// (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt, (L6), from dq_j = Q(y'_j) - Q(y) and
+  /// q = Q(y), with every distance along y scaled by `stretch` (1 for the residual; the Jacobian's
+  /// derivative in l at fixed t). Optionally the weight of each dq_j and the factor of q.
+  Real exterior_right(const PointNodes& nd, const std::vector<Real>& dq, Real q, Real x0,
+                      Real stretch, std::vector<Real>* wq = nullptr, Real* ends = nullptr) const {
+    using std::exp;
+    using std::hypot;
+    using std::log1p;
+    using std::sqrt;
+    const Real v = p_.vtau;
+    const std::size_t nt = nd.tn.size();
+    Eigen::Array<Real, Eigen::Dynamic, 1> uk2(nt), wu(nt);
+    std::vector<Real> xk(nt), wk(nt);
+    for (std::size_t k = 0; k < nt; ++k) {
+      xk[k] = x0 + v * nd.tn[k];
+      wk[k] = v * nd.tw[k] * exp(-nd.tn[k]);
       // In units of x0 (u = x_t/x0 >= 1, sigma = s/x0): K(s) x0^2 = -sum w u (u^2 +
       // sigma^2)^(-3/2), a square root per node instead of hypot (3x dearer), free of overflow
       // while s/x0 < 1e150.
@@ -180,64 +344,108 @@ class LineResidual {
       uk2[k] = u * u;
       wu[k] = wk[k] * u;
     }
-
-    // Nodes in s on both sides, shared by every kernel.
-    Real fp = 0, s1 = 0, s2 = 0;
-    const bool exterior = form_ == LeadingEdgeForm::exterior;
-    for (int side = 0; side < 2; ++side) {
-      const Real len = side == 0 ? d1 : d2;
-      std::vector<Real> sn, sw;
-      detail::append_graded_nodes<Quadrature>(sn, sw, len, x0 / 2, end_width(s, len));
-      for (std::size_t j = 0; j < sn.size(); ++j) {
-        const Real yp = side == 0 ? Real(y + sn[j]) : Real(y - sn[j]);
-        const Real dist = side == 0 ? Real(yp - y) : Real(y - yp);  // recomputed: rounding of yp
-        if (!(dist > 0)) continue;
-        const auto there = strip_functions(c1, s.a(yp), s.b(yp), v, p_.f);
-        fp += sw[j] * (there.f0 - here.f0) / dist;
-        if (!exterior) continue;
-        const Real dq = there.q - here.q;
-        const Real sigma = dist / x0, sigma2 = sigma * sigma, hu = sqrt(1 + sigma2);  // h / x0
-        s1 += sw[j] * dq / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h))
-        // One lazy Eigen expression: packed square roots and divisions, a tree-ordered sum.
-        const Real kern = (wu / ((uk2 + sigma2) * (uk2 + sigma2).sqrt())).sum();
-        s2 -= sw[j] * dq * kern / (x0 * x0);
-      }
+    Real s1 = 0, s2 = 0;
+    for (std::size_t j = 0; j < nd.dist.size(); ++j) {
+      const Real w = nd.weight[j] * stretch;
+      const Real sigma = nd.dist[j] * stretch / x0, sigma2 = sigma * sigma;
+      const Real hu = sqrt(1 + sigma2);  // h / x0
+      const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h))
+      // One lazy Eigen expression: packed square roots and divisions, a tree-ordered sum.
+      const Real k2 = -w * (wu / ((uk2 + sigma2) * (uk2 + sigma2).sqrt())).sum() / (x0 * x0);
+      s1 += k1 * dq[j];
+      s2 += k2 * dq[j];
+      if (wq != nullptr) (*wq)[j] = k1 - k2;
     }
+    const Real d1 = nd.d1 * stretch, d2 = nd.d2 * stretch;
+    const Real h1 = hypot(x0, d1), h2 = hypot(x0, d2);
+    const Real ends_l =
+        -(log1p(x0 * x0 / (2 * d1 * (h1 + d1))) + log1p(x0 * x0 / (2 * d2 * (h2 + d2))));
+    Real ends_2 = 0;
+    for (std::size_t k = 0; k < nt; ++k) {
+      const Real g1 = hypot(xk[k], d1), g2 = hypot(xk[k], d2);
+      ends_2 += wk[k] * xk[k] * (1 / (g1 * (g1 + d1)) + 1 / (g2 * (g2 + d2)));
+    }
+    if (ends != nullptr) *ends = ends_l - ends_2;
+    // (L6): (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt
+    return (s1 + q * ends_l) - (s2 + q * ends_2);
+  }
 
+  /// The right side of the paper's (44) in the form (L2), multiplied by e^{(a + b)/V} to the
+  /// scaling of (42).
+  Real paper_right(const LineShape<Real>& s, Real y, Real x0) const {
+    using std::exp;
+    LineOperators<Real, Quadrature> ops(s.l);
+    const auto q = [&](Real yp) { return strip_functions(p_.c1, s.a(yp), s.b(yp), p_.vtau, p_.f).q; };
+    return exp(x0 / p_.vtau) * ops.leading_edge_kernel(q, p_.vtau, y);
+  }
+
+  /// (34) and the leading-edge row at one point from the finite-part differences df0_j and the
+  /// right side of the leading-edge condition.
+  void point_rows(Real d, Real y, const StripFunctions<Real>& here,
+                  const PointNodes& nd, const std::vector<Real>& df0, Real right, Real& r34,
+                  Real& rle) const {
+    using std::log;
+    const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
+    Real fp = 0;
+    for (std::size_t j = 0; j < df0.size(); ++j) fp += nd.weight[j] * df0[j] / nd.dist[j];
     // (34), scaled by C1 a_ref^2.
-    const Real lhs34 = fp + here.f0 * (log(4 * d1 / a) + log(4 * d2 / a));
+    const Real lhs34 = fp + here.f0 * (log(4 * nd.d1 / a) + log(4 * nd.d2 / a));
     const Real rhs34 = -c1 * a * a / 4 - c1 * b * (b - 2 * v) / 2 - p_.c2 * y * y / 2 + d;
     r34 = (lhs34 - rhs34) / (c1 * p_.a_ref * p_.a_ref);
-
     // Leading-edge condition.
     const Real z = a / v;
     const Real k0 = special::bessel_k0_scaled(z), k1 = special::bessel_k1_scaled(z);
     const Real bessel = c1 * (a * b * k1 - here.g * k0);  // C1 e^z {a b K1 - G K0}, Eq. (42)
-    Real right;
-    if (exterior) {
-      const Real h1 = hypot(x0, d1), h2 = hypot(x0, d2);
-      const Real ends_l =
-          -(log1p(x0 * x0 / (2 * d1 * (h1 + d1))) + log1p(x0 * x0 / (2 * d2 * (h2 + d2))));
-      Real ends_2 = 0;
-      for (std::size_t k = 0; k < xk.size(); ++k) {
-        const Real g1 = hypot(xk[k], d1), g2 = hypot(xk[k], d2);
-        ends_2 += wk[k] * xk[k] * (1 / (g1 * (g1 + d1)) + 1 / (g2 * (g2 + d2)));
-      }
-      // (L6): (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt
-      right = (s1 + here.q * ends_l) - (s2 + here.q * ends_2);
-    } else {
-      // (44) in the form (L2), multiplied by e^{(a + b)/V} to the scaling of (42).
-      LineOperators<Real, Quadrature> ops(s.l);
-      const auto q = [&](Real yp) { return strip_functions(c1, s.a(yp), s.b(yp), v, p_.f).q; };
-      right = exp(x0 / v) * ops.leading_edge_kernel(q, v, y);
-    }
     const Real r_i = special::bessel_i1_over_i0(Real((1 + p_.f) * a / v));
     const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
     rle = (bessel - right) / (slope * p_.a_ref);
-    return true;
   }
 
- private:
+  /// Partial derivatives of G (36), F0 (33), Q (46) in a and b, and I1/I0 and its derivative.
+  struct StripDerivatives {
+    Real g_a, g_b, f0_a, f0_b, q_a, q_b, ri, ri_x;
+  };
+  StripDerivatives strip_derivatives(Real a, Real b) const {
+    using std::sqrt;
+    const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
+    const Real alpha = (1 + f) * a / v;                  // Eq. (37)
+    const Real ri = special::bessel_i1_over_i0(alpha);  // I1/I0
+    // DLMF 10.29.2: (I1/I0)' = 1 - (I1/I0)/x - (I1/I0)^2; 1/2 - 3x^2/16 + ... at 0.
+    const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())
+                          ? Real(0.5)
+                          : Real(1 - ri / alpha - ri * ri);
+    const Real k = v * f / (1 + f) - b;
+    const Real g = a * k * ri;
+    const Real g_a = k * (ri + alpha * ri_x), g_b = -a * ri;
+    return {g_a,
+            g_b,
+            c1 * (a / 2 + g_a / 2),
+            c1 * g_b / 2,
+            c1 * g_a * (v - b) / (2 * v),
+            c1 * (g_b * (v - b) - g) / (2 * v),
+            ri,
+            ri_x};
+  }
+
+  /// d a(y)/d x and d b(y)/d x at y for fixed t = y/l (zero in ln l and d).
+  void shape_gradient(const LineShape<Real>& s, Real y, Real a, Vector& da, Vector& db) const {
+    da.setZero(unknowns());
+    db.setZero(unknowns());
+    const Real w = s.one_minus_t2(y);
+    const Real u = LineShape<Real>::coordinate(basis_, w > 0 ? w : Real(0));
+    Real tkm1 = 1, tk = u;  // T_0, T_1
+    for (int k = 0; k <= n_; ++k) {
+      const Real tval = k == 0 ? Real(1) : tk;
+      if (k < n_) da[k] = a * tval;
+      db[n_ + k] = p_.a_ref * tval;
+      if (k >= 1) {
+        const Real next = 2 * u * tk - tkm1;
+        tkm1 = tk;
+        tk = next;
+      }
+    }
+  }
+
   /// Finest panel toward the end of a side of length len: the distance of the nearest pole of G
   /// beyond y = +-l, where (1 + f) a(y) / V tau = +- i j_{0,1} (a^2 < 0 just past the end).
   Real end_width(const LineShape<Real>& s, Real len) const {

@@ -52,6 +52,12 @@ struct LineScene {
   }
 };
 
+/// How the line solver forms the Jacobian of its residual.
+enum class LineJacobian {
+  analytic,    ///< chain rule through the shape and the strip functions (LineResidual::jacobian)
+  difference,  ///< forward differences, 2 terms + 3 residual evaluations
+};
+
 /// Runtime settings of the line solver.
 struct LineOptions {
   /// Discretisation: ln a(y) has `terms` Chebyshev coefficients, b(y) has terms + 1; the
@@ -64,6 +70,9 @@ struct LineOptions {
   LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
   /// Expansion variable of a(y), b(y).
   LineBasis basis = LineBasis::t_squared;
+  /// How the Jacobian is formed: semi-analytic (LineResidual::jacobian, default; the (L6) form
+  /// only, the paper's (44) always uses differences) or by forward differences.
+  LineJacobian jacobian = LineJacobian::analytic;
 
   void validate() const {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
@@ -312,6 +321,10 @@ class LineSolver {
     bool fresh = false;
     int stalled = 0;
     const auto difference_jacobian = [&]() {
+      if (options_.jacobian == LineJacobian::analytic && res.jacobian(x, rt, jac)) {
+        fresh = true;
+        return true;
+      }
       for (int j = 0; j < n; ++j) {
         const Real h = sqrt(eps) * std::max(Real(1), Real(abs(x[j])));
         trial = x;

@@ -1,0 +1,122 @@
+// Tests of LineResidual::jacobian (viscoroll/line/line_residual.hpp), the semi-analytic Jacobian
+// of the line equations (docs/line-solver.md, "Jacobian"), against central differences of the
+// residual itself, and of the line solver with it against the solver with forward differences.
+//
+// The paper's scene: StandardLinearSolid(mu_D = 1, nu = 0.5, f = 9, tau = 1), C1 = 1,
+// C2/C1 = (ln 20 - 1)/25 and the load of a long-term static a0 = 1, l0 = 5 (as in
+// line_solver.test.cpp). Measured values next to the tolerances: Release build, GCC 12, x86-64.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <viscoroll/line/line_residual.hpp>
+#include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+
+namespace {
+
+using viscoroll::LineJacobian;
+using viscoroll::LineOptions;
+using viscoroll::LineSolverD;
+using viscoroll::StandardLinearSolid;
+
+const StandardLinearSolid<double> kRubber(1, 0.5, 9, 1);
+
+viscoroll::LineScene<double> paper_scene(double vtau) {
+  const double c1 = 1, ratio = (std::log(20.0) - 1) / 25;
+  const double load = 5 * c1 / (3 * (1 + 9) * kRubber.instantaneous_compliance());
+  return {c1, ratio * c1, load, vtau};
+}
+
+/// Largest relative column error of J against central differences of the residual, at the
+/// solver's last iterate (converged, except at V tau/a0 = 0.003, where the iteration stops at a
+/// residual of 6e-5, docs/line-solver.md) moved by `offset` (x_k += offset sin(3k + 1)).
+double worst_column_error(double vtau, int terms, double offset) {
+  LineOptions options;
+  options.terms = terms;
+  const LineSolverD solver(kRubber, options);
+  const auto scene = paper_scene(vtau);
+  const auto sol = solver.solve(scene);
+  const auto res = solver.residual(scene);
+  Eigen::VectorXd x = res.pack(sol.shape, sol.d);
+  for (int k = 0; k < x.size(); ++k) x[k] += offset * std::sin(3.0 * k + 1);
+  const int m = res.equations(), n = res.unknowns();
+  Eigen::VectorXd r(m), rp(m), rm(m), r_op(m);
+  Eigen::MatrixXd jac(m, n);
+  REQUIRE(res.jacobian(x, r, jac));
+  REQUIRE(res(x, r_op));
+  CHECK((r - r_op).cwiseAbs().maxCoeff() == 0);  // the same residual, bit for bit
+  double worst = 0;
+  for (int j = 0; j < n; ++j) {
+    // h = 1e-5: the central difference's truncation error, O(h^2), and its rounding error,
+    // O(eps/h), are both below 1e-9 of a column (changing h tenfold either way moves the
+    // measured error by less than 1e-9).
+    const double h = 1e-5 * std::max(1.0, std::abs(x[j]));
+    Eigen::VectorXd xp = x, xm = x;
+    xp[j] += h;
+    xm[j] -= h;
+    REQUIRE(res(xp, rp));
+    REQUIRE(res(xm, rm));
+    const Eigen::VectorXd column = (rp - rm) / (2 * h);
+    worst = std::max(worst, (jac.col(j) - column).norm() / column.norm());
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("line: the semi-analytic Jacobian against central differences of the residual",
+          "[line][jacobian]") {
+  // The Jacobian holds the quadrature nodes fixed in t = y/l, while the residual's panels follow
+  // the leading edge x0 (graded at x0/2) and the t-nodes of (L6) its scale x0/V: the difference is
+  // the derivative of the quadrature error, plus the forward differences (step sqrt(eps) x0) of
+  // the kernels in x0 and l, O(sqrt(eps)) = 1.5e-8. Measured: 1.3e-9 (V tau/a0 = 0.1), 7.4e-9
+  // (1), 3.4e-8 (10), 3.3e-7 (1000), 9.5e-8 (0.003) at the solution, N = 4; 6.4e-9 at N = 8;
+  // 2e-8 to 5.9e-7 with every coefficient moved by 0.01. Bound: 2e-6, a few times the largest.
+  const double bound = 2e-6;
+  for (const double vtau : {0.003, 0.1, 1.0, 10.0, 1000.0}) {
+    for (const double offset : {0.0, 0.01}) {
+      INFO("V tau/a0 = " << vtau << ", offset " << offset);
+      CHECK(worst_column_error(vtau, 4, offset) <= bound);
+    }
+  }
+  INFO("N = 8, V tau = a0");
+  CHECK(worst_column_error(1.0, 8, 0.0) <= bound);
+}
+
+TEST_CASE("line: the solver reaches the same root with either Jacobian", "[line][jacobian]") {
+  // Both iterations end at a residual of ~1e-15 of the same square system. The scaled Jacobian's
+  // smallest singular value at these N is ~1e-2-1e-3 (docs/theory.md section 5), so the two
+  // roots may differ by ~1e3 residuals: 1e-12. Bound 1e-10 relative; measured <= 7e-14 (the
+  // iteration counts are the same, or differ by one).
+  for (const double vtau : {0.1, 1.0, 10.0}) {
+    for (const int terms : {4, 6}) {
+      LineOptions analytic, difference;
+      analytic.terms = difference.terms = terms;
+      difference.jacobian = LineJacobian::difference;
+      const auto a = LineSolverD(kRubber, analytic).solve(paper_scene(vtau));
+      const auto b = LineSolverD(kRubber, difference).solve(paper_scene(vtau));
+      INFO("V tau/a0 = " << vtau << ", N = " << terms << ": " << a.reason << " / " << b.reason);
+      REQUIRE(a.converged);
+      REQUIRE(b.converged);
+      const double tol = 1e-10;
+      CHECK(std::abs(a.a(0) / b.a(0) - 1) <= tol);
+      CHECK(std::abs(a.b(0) / b.b(0) - 1) <= tol);
+      CHECK(std::abs(a.l() / b.l() - 1) <= tol);
+      CHECK(std::abs(a.d / b.d - 1) <= tol);
+      CHECK(std::abs(a.chi / b.chi - 1) <= tol);
+    }
+  }
+}
+
+TEST_CASE("line: the Jacobian is declined for the paper's (44)", "[line][jacobian]") {
+  LineOptions options;
+  options.terms = 3;
+  options.leading_edge = viscoroll::LeadingEdgeForm::paper;
+  const LineSolverD solver(kRubber, options);
+  const auto res = solver.residual(paper_scene(1.0));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(res.unknowns()), r;
+  Eigen::MatrixXd jac;
+  CHECK_FALSE(res.jacobian(x, r, jac));
+}
