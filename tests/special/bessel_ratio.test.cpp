@@ -1,5 +1,6 @@
 // Tests of viscoroll/special/bessel_ratio.hpp: I_1/I_0, I_2/I_0, K_1/K_0 and e^{-x} I_nu, e^{x}
 // K_nu.
+#include <algorithm>
 #include <boost/math/special_functions/next.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <catch2/catch.hpp>
@@ -271,4 +272,36 @@ TEST_CASE("Bessel ratios in float reach arguments whose unscaled functions overf
   const float k = bessel_k1_over_k0(1e-40f);
   CHECK(std::isfinite(k));
   CHECK(k > 1e38f);
+}
+
+TEST_CASE("bessel_i1_over_i0_fast: double without promotion, within 4 eps; other types forward",
+          "[special]") {
+  using viscoroll::special::bessel_i1_over_i0_fast;
+  // Against the 60-digit references at every point of the table (they straddle x_T = 21 and the
+  // sqrt(eps) branch), and against cpp_bin_float_50 on a geometric grid of 600 points in
+  // [1.5e-8, 21), where Boost's double-precision approximations are used. Bound 4 eps, as for
+  // the promoted form (a quotient of two Boost values); measured: 3.1 eps over 30096 points of
+  // that range against cpp_bin_float_50 (docs/special-functions.md).
+  for (const auto& r : references) {
+    const double x = std::ldexp(double(r.m), r.e);
+    const double expected = parse<double>(r.value[0]);
+    INFO("x = " << r.m << " * 2^" << r.e);
+    CHECK(error_in_eps(bessel_i1_over_i0_fast(x), expected) <= 4);
+  }
+  double worst = 0;
+  for (double x = 1.5e-8; x < 21; x *= 1.0307) {  // 696 points
+    const Mp50 big(x);
+    const Mp50 exact =
+        boost::math::cyl_bessel_i(Mp50(1), big) / boost::math::cyl_bessel_i(Mp50(0), big);
+    const double error = static_cast<double>(
+        abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) / exact) /
+        std::numeric_limits<double>::epsilon());
+    worst = std::max(worst, error);
+  }
+  CHECK(worst <= 4);
+  // float and long double: the accurate function itself.
+  for (const float x : {1e-3f, 0.5f, 3.0f, 9.5f, 40.0f})
+    CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
+  for (const long double x : {1e-3L, 0.5L, 3.0L, 23.0L, 40.0L})
+    CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
 }

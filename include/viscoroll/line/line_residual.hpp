@@ -195,10 +195,10 @@ class LineResidual {
     Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu);
     for (int i = 0; i < m; ++i) {
       const Real t = t_[i], y = t * s.l;
-      const auto here = strip_functions(c1, s.a(y), s.b(y), v, p_.f);
+      const auto dh = strip_derivatives(s.a(y), s.b(y));
+      const auto& here = dh.value;
       const Real a = here.a, b = here.b, x0 = a + b;
       if (!(a > 0) || !(x0 > 0)) return false;
-      const auto dh = strip_derivatives(a, b);
       shape_gradient(s, y, a, da_i, db_i);
       df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
       dq_i = dh.q_a * da_i + dh.q_b * db_i;
@@ -212,7 +212,8 @@ class LineResidual {
       std::vector<StripDerivatives> dn(count);
       std::vector<StripFunctions<Real>> there(count);
       for (std::size_t j = 0; j < count; ++j) {
-        there[j] = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), v, p_.f);
+        dn[j] = strip_derivatives(s.a(nd.yp[j]), s.b(nd.yp[j]));
+        there[j] = dn[j].value;
         df0[j] = there[j].f0 - here.f0;
         dq[j] = there[j].q - here.q;
       }
@@ -226,7 +227,7 @@ class LineResidual {
       Real w0sum = 0, wqsum = 0;
       for (std::size_t j = 0; j < count; ++j) {
         if (!(there[j].a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
-        const auto dj = strip_derivatives(there[j].a, there[j].b);
+        const auto& dj = dn[j];
         shape_gradient(s, nd.yp[j], there[j].a, dan, dbn);
         const Real w0 = nd.weight[j] / nd.dist[j];
         dnode = dj.f0_a * dan + dj.f0_b * dbn;
@@ -274,10 +275,10 @@ class LineResidual {
     Real sum = 0;
     Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
     for (std::size_t j = 0; j < nodes.size(); ++j) {
-      const auto sf = strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), v, p_.f);
+      const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
+      const auto& sf = dj.value;
       sum += weights[j] * sf.f0;
       if (!(sf.a > 0)) continue;
-      const auto dj = strip_derivatives(sf.a, sf.b);
       shape_gradient(s, nodes[j], sf.a, dan, dbn);
       dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
     }
@@ -396,20 +397,23 @@ class LineResidual {
     const Real z = a / v;
     const Real k0 = special::bessel_k0_scaled(z), k1 = special::bessel_k1_scaled(z);
     const Real bessel = c1 * (a * b * k1 - here.g * k0);  // C1 e^z {a b K1 - G K0}, Eq. (42)
-    const Real r_i = special::bessel_i1_over_i0(Real((1 + p_.f) * a / v));
+    const Real r_i = special::bessel_i1_over_i0_fast(Real((1 + p_.f) * a / v));
     const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
     rle = (bessel - right) / (slope * p_.a_ref);
   }
 
-  /// Partial derivatives of G (36), F0 (33), Q (46) in a and b, and I1/I0 and its derivative.
+  /// G (36), F0 (33), Q (46) (as strip_functions) with their partial derivatives in a and b,
+  /// and I1/I0 and its derivative; all zero for a <= 0 (beyond the ends).
   struct StripDerivatives {
+    StripFunctions<Real> value;
     Real g_a, g_b, f0_a, f0_b, q_a, q_b, ri, ri_x;
   };
   StripDerivatives strip_derivatives(Real a, Real b) const {
     using std::sqrt;
     const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
+    if (!(a > 0)) return {{Real(0), b, Real(0), Real(0), Real(0)}, 0, 0, 0, 0, 0, 0, 0, 0};
     const Real alpha = (1 + f) * a / v;                  // Eq. (37)
-    const Real ri = special::bessel_i1_over_i0(alpha);  // I1/I0
+    const Real ri = special::bessel_i1_over_i0_fast(alpha);  // I1/I0
     // DLMF 10.29.2: (I1/I0)' = 1 - (I1/I0)/x - (I1/I0)^2; 1/2 - 3x^2/16 + ... at 0.
     const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())
                           ? Real(0.5)
@@ -417,7 +421,10 @@ class LineResidual {
     const Real k = v * f / (1 + f) - b;
     const Real g = a * k * ri;
     const Real g_a = k * (ri + alpha * ri_x), g_b = -a * ri;
-    return {g_a,
+    // The values as strip_functions computes them (line_shape.hpp), with the same I1/I0.
+    const StripFunctions<Real> value{a, b, g, c1 * (a * a / 4 + g / 2), c1 * g * (v - b) / (2 * v)};
+    return {value,
+            g_a,
             g_b,
             c1 * (a / 2 + g_a / 2),
             c1 * g_b / 2,

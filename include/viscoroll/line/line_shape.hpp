@@ -121,7 +121,7 @@ template <RealScalar Real>
 StripFunctions<Real> strip_functions(Real c1, Real a, Real b, Real vtau, Real f) {
   if (!(a > 0)) return {Real(0), b, Real(0), Real(0), Real(0)};
   const Real alpha = (1 + f) * a / vtau;                                           // Eq. (37)
-  const Real g = a * (vtau * f / (1 + f) - b) * special::bessel_i1_over_i0(alpha);  // Eq. (36)
+  const Real g = a * (vtau * f / (1 + f) - b) * special::bessel_i1_over_i0_fast(alpha);  // Eq. (36)
   return {a, b, g, c1 * (a * a / 4 + g / 2), c1 * g * (vtau - b) / (2 * vtau)};    // (33), (46)
 }
 

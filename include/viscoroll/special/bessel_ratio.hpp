@@ -19,6 +19,7 @@
 #include <boost/math/special_functions/bessel.hpp>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/special/detail/bessel_ratio_detail.hpp>
 
@@ -93,6 +94,26 @@ Real bessel_i1_over_i0(Real x) {
                              boost::math::cyl_bessel_i(Real(0), x));
   // DLMF 10.40.1 for both orders; the common factor e^x / sqrt(2 pi x) cancels.
   return detail::hankel_ratio(1, 0, x, true);
+}
+
+/// I_1(x) / I_0(x) as bessel_i1_over_i0, but for double below x_T from Boost's double-precision
+/// rational approximations without the promotion to long double (4.5x faster, 47 ns against
+/// 211 ns): within 3.1 eps of the exact ratio over 30096 arguments in [1.5e-8, 21), against 2.3 eps
+/// for the promoted form (docs/special-functions.md). The line solver's inner loops use it, where
+/// the ratio is evaluated at every quadrature node; other types forward to bessel_i1_over_i0.
+template <RealScalar Real>
+Real bessel_i1_over_i0_fast(Real x) {
+  if constexpr (std::is_same_v<Real, double>) {
+    using boost::math::policies::policy;
+    using boost::math::policies::promote_double;
+    if (x >= std::sqrt(std::numeric_limits<double>::epsilon()) &&
+        x < detail::bessel_asymptotic_threshold<double>()) {
+      const policy<promote_double<false>> in_double;
+      return boost::math::cyl_bessel_i(1.0, x, in_double) /
+             boost::math::cyl_bessel_i(0.0, x, in_double);
+    }
+  }
+  return bessel_i1_over_i0(x);
 }
 
 /// I_2(x) / I_0(x) = 1 - 2 I_1(x) / (x I_0(x)) for x >= 0 (+inf allowed), in [0, 1): x^2/8 near 0,

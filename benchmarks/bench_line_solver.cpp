@@ -1,0 +1,91 @@
+// The line solver as a whole on the paper's scene (f = 9, nu = 0.5, a 5:1 static contact:
+// C2/C1 = (ln 20 - 1)/25, the load of a long-term static a0 = 1, l0 = 5), in double, one thread:
+//   BM_line_solve/N/s:  one cold solve (no seed: continuation in N from the plane seed,
+//                       docs/line-solver.md) at V tau/a0 = s/1000, with `terms` = N;
+//   BM_line_solve_difference_jacobian/N/s:  the same with the forward-difference Jacobian
+//                       (LineJacobian::difference), the solver before the semi-analytic one;
+//   BM_line_sweep/N:    the figures' sweep (examples/panek_kalker): 101 speeds V tau/a0 = 10^-3 ...
+//                       10^3, evenly spaced in log, each seeded with the last converged solution.
+// Counters: iterations, converged (1/0) and, for the sweep, the speeds that did not converge (the
+// line equations have no root near the branch at V tau/a0 ~ 1.7e-3 ... 5e-3, N = 4:
+// docs/line-solver.md); each is reported, and its time counts.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <viscoroll/viscoroll.hpp>
+
+namespace {
+
+const viscoroll::StandardLinearSolid<double> kRubber(1, 0.5, 9, 1);  // tau = 1: speed = V tau
+
+viscoroll::LineScene<double> paper_scene(double vtau) {
+  const double load = 5.0 / (3 * (1 + 9) * kRubber.instantaneous_compliance());  // a0 = 1
+  return {1.0, (std::log(20.0) - 1) / 25, load, vtau};
+}
+
+void solve_once(benchmark::State& state, viscoroll::LineJacobian jacobian) {
+  viscoroll::LineOptions options;
+  options.terms = static_cast<int>(state.range(0));
+  options.jacobian = jacobian;
+  const double vtau = static_cast<double>(state.range(1)) / 1000;
+  const viscoroll::LineSolverD solver(kRubber, options);
+  viscoroll::LineSolverD::Solution s;
+  for (auto _ : state) {
+    s = solver.solve(paper_scene(vtau));
+    benchmark::DoNotOptimize(s.d);
+  }
+  state.counters["vtau"] = vtau;
+  state.counters["iterations"] = s.iterations;
+  state.counters["converged"] = s.converged ? 1 : 0;
+}
+
+void BM_line_solve(benchmark::State& state) { solve_once(state, viscoroll::LineJacobian::analytic); }
+
+void BM_line_solve_difference_jacobian(benchmark::State& state) {
+  solve_once(state, viscoroll::LineJacobian::difference);
+}
+
+void BM_line_sweep(benchmark::State& state) {
+  viscoroll::LineOptions options;
+  options.terms = static_cast<int>(state.range(0));
+  const viscoroll::LineSolverD solver(kRubber, options);
+  const int speeds = 101;
+  int failures = 0;
+  for (auto _ : state) {
+    failures = 0;
+    viscoroll::LineSolverD::Solution last;
+    bool have = false;
+    for (int i = 0; i < speeds; ++i) {
+      const double vtau = std::pow(10.0, -3 + 6.0 * i / (speeds - 1));
+      auto s = solver.solve(paper_scene(vtau), have ? &last : nullptr);
+      if (s.converged) {
+        last = std::move(s);
+        have = true;
+      } else {
+        ++failures;
+      }
+    }
+    benchmark::DoNotOptimize(last.d);
+  }
+  state.counters["speeds"] = speeds;
+  state.counters["not_converged"] = failures;
+}
+
+}  // namespace
+
+BENCHMARK(BM_line_solve)
+    ->Args({4, 100})
+    ->Args({4, 1000})
+    ->Args({4, 10000})
+    ->Args({8, 1000})
+    ->Args({16, 1000})
+    ->Args({32, 1000})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_solve_difference_jacobian)
+    ->Args({4, 100})
+    ->Args({4, 1000})
+    ->Args({4, 10000})
+    ->Args({8, 1000})
+    ->Args({16, 1000})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_sweep)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);
