@@ -5,7 +5,8 @@
 // docs/theory.md section 4 (the extended operator (26), (41) and its eta-integral, the Bessel
 // terms of (42)) at every collocation point, and the load (47), with G, F0, Q from (36), (33),
 // (46) at every quadrature node. The unknowns are the converged N = 4 solution, re-expanded to
-// N terms. The Levenberg-Marquardt iteration costs 2N + 4 such evaluations per step.
+// N terms. BM_line_jacobian: the residual with its semi-analytic Jacobian (theory.md section 6),
+// which the Levenberg-Marquardt iteration takes at its start and when Broyden's update fails.
 // Counters: equations, unknowns, max |r| at the point (to show where it was evaluated).
 #include <benchmark/benchmark.h>
 
@@ -63,8 +64,38 @@ void BM_line_residual(benchmark::State& state) {
   state.counters["max_abs_r"] = static_cast<double>(r.cwiseAbs().maxCoeff());
 }
 
+/// The residual and its semi-analytic Jacobian (LineResidual::jacobian) at the same point.
+template <class Real>
+void BM_line_jacobian(benchmark::State& state) {
+  const int terms = static_cast<int>(state.range(0));
+  viscoroll::LineOptions options;
+  options.terms = terms;
+  const auto material = paper_material<Real>();
+  const viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(material, options);
+  const auto residual = solver.residual(paper_scene(Real(9), material.instantaneous_compliance()));
+  const auto& start = reference_solution<Real>();
+  const auto x = residual.pack(start.shape, start.d);
+  typename decltype(residual)::Vector r(residual.equations());
+  typename decltype(residual)::Matrix jac(residual.equations(), residual.unknowns());
+  bool ok = residual.jacobian(x, r, jac);
+  for (auto _ : state) {
+    ok = residual.jacobian(x, r, jac);
+    benchmark::DoNotOptimize(jac.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(ok ? "residual and semi-analytic Jacobian" : "Jacobian undefined");
+  state.counters["terms"] = terms;
+  state.counters["unknowns"] = residual.unknowns();
+}
+
 }  // namespace
 
+BENCHMARK_TEMPLATE(BM_line_jacobian, double)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_line_residual, float)
     ->Arg(2)
     ->Arg(4)

@@ -4,7 +4,7 @@
 // residual, median wall seconds of `--repeat` solves, reason. The data behind
 // docs/line-solver.md's tables and docs/line-solver-convergence.txt.
 //
-// usage: line_self_convergence <V tau/a0> <terms>... [--repeat R]
+// usage: line_self_convergence <V tau/a0> <terms>... [--repeat R] [--basis t2|s]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,9 +20,14 @@ int main(int argc, char** argv) {
     std::vector<int> terms;
     int repeat = 1;
     double vtau = -1;
+    viscoroll::LineBasis basis = viscoroll::LineBasis::t_squared;
     for (int i = 1; i < argc; ++i) {
       const std::string_view a = argv[i];
-      if (a == "--repeat" && i + 1 < argc) {
+      if (a == "--basis" && i + 1 < argc) {
+        const std::string_view b = argv[++i];
+        if (b != "t2" && b != "s") throw std::invalid_argument("--basis expects t2 or s");
+        basis = b == "s" ? viscoroll::LineBasis::s : viscoroll::LineBasis::t_squared;
+      } else if (a == "--repeat" && i + 1 < argc) {
         repeat = std::stoi(argv[++i]);
         if (repeat < 1 || repeat > 1000) throw std::invalid_argument("--repeat expects 1..1000");
       } else if (vtau < 0) {
@@ -44,6 +49,7 @@ int main(int argc, char** argv) {
     for (const int n : terms) {
       viscoroll::LineOptions options;
       options.terms = n;
+      options.basis = basis;
       const viscoroll::LineSolverD solver(material, options);
       std::vector<double> seconds;
       viscoroll::LineSolverD::Solution s;
@@ -63,7 +69,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr,
                  "line_self_convergence: %s\nusage: line_self_convergence <V tau/a0> <terms>... "
-                 "[--repeat R]\n",
+                 "[--repeat R] [--basis t2|s]\n",
                  e.what());
     return 2;
   }
