@@ -39,7 +39,9 @@ void solve_once(benchmark::State& state, viscoroll::LineJacobian jacobian) {
   state.counters["converged"] = s.converged ? 1 : 0;
 }
 
-void BM_line_solve(benchmark::State& state) { solve_once(state, viscoroll::LineJacobian::analytic); }
+void BM_line_solve(benchmark::State& state) {
+  solve_once(state, viscoroll::LineJacobian::analytic);
+}
 
 void BM_line_solve_difference_jacobian(benchmark::State& state) {
   solve_once(state, viscoroll::LineJacobian::difference);
@@ -74,6 +76,8 @@ void BM_line_sweep(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_line_solve)
+    ->Args({2, 1000})
+    ->Args({3, 1000})
     ->Args({4, 100})
     ->Args({4, 1000})
     ->Args({4, 10000})
@@ -88,4 +92,4 @@ BENCHMARK(BM_line_solve_difference_jacobian)
     ->Args({8, 1000})
     ->Args({16, 1000})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_line_sweep)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_line_sweep)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);

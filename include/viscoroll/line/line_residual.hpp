@@ -172,11 +172,11 @@ class LineResidual {
     return true;
   }
 
-  /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/line-solver.md,
-  /// "Jacobian"): the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
+  /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/theory.md section 6):
+  /// the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
   /// (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
-  /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), at nodes held
-  /// fixed in t = y/l. Only the kernels' dependence on the leading edge x0 = a + b and on l (a
+  /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), at nodes
+  /// held fixed in t = y/l. Only the kernels' dependence on the leading edge x0 = a + b and on l (a
   /// few sums per point, no Bessel work) is differentiated by forward differences. Exterior form
   /// (L6) only; returns false where operator() would, or for the paper's form.
   bool jacobian(const Vector& x, Vector& r, Matrix& jac) const {
@@ -247,7 +247,8 @@ class LineResidual {
       const Real r_l = (exterior_right(nd, dq, here.q, x0, 1 + h) - right) / log1p(h);
       dright += r_x0 * (da_i + db_i);
       dright[lam] += r_l;
-      // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2], rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
+      // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
+      //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
       const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
       dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
       dlhs[lam] += 2 * here.f0;
@@ -264,8 +265,7 @@ class LineResidual {
       const Real slope_a =
           c1 * (e1 + ri * e0) + c1 * a * (e1z / v + dh.ri_x * (1 + p_.f) / v * e0 + ri * e0z / v);
       const Vector dbessel = bessel_a * da_i + bessel_b * db_i;
-      const Vector drle =
-          (dbessel - dright) / (slope * p_.a_ref) - (rle * slope_a / slope) * da_i;
+      const Vector drle = (dbessel - dright) / (slope * p_.a_ref) - (rle * slope_a / slope) * da_i;
       jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
       jac.row(m + i) = drle.transpose();
     }
@@ -291,7 +291,6 @@ class LineResidual {
   }
 
  private:
-
   /// The nodes of one collocation point: y' = y +- s on both sides (panels doubling from x0/2 and
   /// halving toward the ends), and the t-nodes of the eta-integral of (L6).
   struct PointNodes {
@@ -349,7 +348,7 @@ class LineResidual {
     for (std::size_t j = 0; j < nd.dist.size(); ++j) {
       const Real w = nd.weight[j] * stretch;
       const Real sigma = nd.dist[j] * stretch / x0, sigma2 = sigma * sigma;
-      const Real hu = sqrt(1 + sigma2);  // h / x0
+      const Real hu = sqrt(1 + sigma2);                      // h / x0
       const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h))
       // One lazy Eigen expression: packed square roots and divisions, a tree-ordered sum.
       const Real k2 = -w * (wu / ((uk2 + sigma2) * (uk2 + sigma2).sqrt())).sum() / (x0 * x0);
@@ -376,15 +375,16 @@ class LineResidual {
   Real paper_right(const LineShape<Real>& s, Real y, Real x0) const {
     using std::exp;
     LineOperators<Real, Quadrature> ops(s.l);
-    const auto q = [&](Real yp) { return strip_functions(p_.c1, s.a(yp), s.b(yp), p_.vtau, p_.f).q; };
+    const auto q = [&](Real yp) {
+      return strip_functions(p_.c1, s.a(yp), s.b(yp), p_.vtau, p_.f).q;
+    };
     return exp(x0 / p_.vtau) * ops.leading_edge_kernel(q, p_.vtau, y);
   }
 
   /// (34) and the leading-edge row at one point from the finite-part differences df0_j and the
   /// right side of the leading-edge condition.
-  void point_rows(Real d, Real y, const StripFunctions<Real>& here,
-                  const PointNodes& nd, const std::vector<Real>& df0, Real right, Real& r34,
-                  Real& rle) const {
+  void point_rows(Real d, Real y, const StripFunctions<Real>& here, const PointNodes& nd,
+                  const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const {
     using std::log;
     const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
     Real fp = 0;
@@ -412,7 +412,7 @@ class LineResidual {
     using std::sqrt;
     const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
     if (!(a > 0)) return {{Real(0), b, Real(0), Real(0), Real(0)}, 0, 0, 0, 0, 0, 0, 0, 0};
-    const Real alpha = (1 + f) * a / v;                  // Eq. (37)
+    const Real alpha = (1 + f) * a / v;                      // Eq. (37)
     const Real ri = special::bessel_i1_over_i0_fast(alpha);  // I1/I0
     // DLMF 10.29.2: (I1/I0)' = 1 - (I1/I0)/x - (I1/I0)^2; 1/2 - 3x^2/16 + ... at 0.
     const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())
