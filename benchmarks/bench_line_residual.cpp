@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <utility>
 #include <viscoroll/viscoroll.hpp>
 
 namespace {
@@ -40,17 +41,32 @@ const viscoroll::LineSolution<Real, viscoroll::GaussLegendre<Real, 12>>& referen
   return solution;
 }
 
+/// The residual assembly of the paper's scene at `terms` and the converged N = 4 solution
+/// re-expanded to it.
+template <class Real>
+struct ResidualAtSolution {
+  using Residual = viscoroll::LineResidual<Real, viscoroll::GaussLegendre<Real, 12>>;
+  Residual residual;
+  typename Residual::Vector x;
+
+  static ResidualAtSolution make(int terms) {
+    viscoroll::LineOptions options;
+    options.terms = terms;
+    const auto material = paper_material<Real>();
+    const viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(material,
+                                                                                   options);
+    auto residual = solver.residual(paper_scene(Real(9), material.instantaneous_compliance()));
+    const auto& start = reference_solution<Real>();
+    auto x = residual.pack(start.shape, start.d);
+    return {std::move(residual), std::move(x)};
+  }
+};
+
 template <class Real>
 void BM_line_residual(benchmark::State& state) {
   const int terms = static_cast<int>(state.range(0));
-  viscoroll::LineOptions options;
-  options.terms = terms;
-  const auto material = paper_material<Real>();
-  const viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(material, options);
-  const auto residual = solver.residual(paper_scene(Real(9), material.instantaneous_compliance()));
-  const auto& start = reference_solution<Real>();
-  const auto x = residual.pack(start.shape, start.d);
-  typename decltype(residual)::Vector r(residual.equations());
+  const auto [residual, x] = ResidualAtSolution<Real>::make(terms);
+  typename ResidualAtSolution<Real>::Residual::Vector r(residual.equations());
   bool ok = residual(x, r);
   for (auto _ : state) {
     ok = residual(x, r);
@@ -68,15 +84,10 @@ void BM_line_residual(benchmark::State& state) {
 template <class Real>
 void BM_line_jacobian(benchmark::State& state) {
   const int terms = static_cast<int>(state.range(0));
-  viscoroll::LineOptions options;
-  options.terms = terms;
-  const auto material = paper_material<Real>();
-  const viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(material, options);
-  const auto residual = solver.residual(paper_scene(Real(9), material.instantaneous_compliance()));
-  const auto& start = reference_solution<Real>();
-  const auto x = residual.pack(start.shape, start.d);
-  typename decltype(residual)::Vector r(residual.equations());
-  typename decltype(residual)::Matrix jac(residual.equations(), residual.unknowns());
+  const auto [residual, x] = ResidualAtSolution<Real>::make(terms);
+  typename ResidualAtSolution<Real>::Residual::Vector r(residual.equations());
+  typename ResidualAtSolution<Real>::Residual::Matrix jac(residual.equations(),
+                                                          residual.unknowns());
   bool ok = residual.jacobian(x, r, jac);
   for (auto _ : state) {
     ok = residual.jacobian(x, r, jac);
