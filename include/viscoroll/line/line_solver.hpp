@@ -64,7 +64,8 @@ struct LineOptions {
   /// equations are collocated at terms + 1 points.
   int terms = 8;
   /// Levenberg-Marquardt iterations allowed (each costs one residual evaluation per damping try,
-  /// plus 2 terms + 3 when the difference Jacobian is refreshed).
+  /// plus one Jacobian when it is refreshed: ~2.5 residual evaluations semi-analytic, 2 terms + 3
+  /// by differences).
   int max_iterations = 100;
   /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
   LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
@@ -299,12 +300,13 @@ class LineSolver {
   }
 
   /// Levenberg-Marquardt with Marquardt's diagonal scaling, from x (with r = res(x)); x and r hold
-  /// the last accepted iterate on return. The Jacobian is a forward difference (2 terms + 3
-  /// residual evaluations) refreshed only when needed: after an accepted step it takes Broyden's
-  /// rank-one update J += (dr - J s) s^T / (s^T s), which satisfies the secant condition J s = dr
-  /// (docs/line-solver.md, "Jacobian"). When the updated Jacobian finds no descent step within a
-  /// few dampings, the difference Jacobian is recomputed; "no descent step" is decided with a
-  /// fresh one only, so the stopping reasons are those of the plain method.
+  /// the last accepted iterate on return. The Jacobian (semi-analytic, LineResidual::jacobian, or a
+  /// forward difference of 2 terms + 3 residual evaluations, LineOptions::jacobian) is refreshed
+  /// only when needed: after an accepted step it takes Broyden's rank-one update
+  /// J += (dr - J s) s^T / (s^T s), which satisfies the secant condition J s = dr
+  /// (docs/line-solver.md, "Iteration"). When the updated Jacobian finds no descent step within a
+  /// few dampings, the Jacobian is recomputed; "no descent step" is decided with a fresh one only,
+  /// so the stopping reasons are those of the plain method.
   Outcome iterate(const LineResidual<Real, Quadrature>& res, Vector& x, Vector& r) const {
     using std::abs;
     using std::pow;
