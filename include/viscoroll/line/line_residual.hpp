@@ -145,7 +145,7 @@ class LineResidual {
   /// int_{-l}^{l} F0 dy (Eq. 47).
   Real load(const LineShape<Real>& s) const {
     std::vector<Real> nodes, weights;
-    detail::append_graded_nodes<Quadrature>(nodes, weights, s.l, s.l / 2, end_width(s, s.l));
+    load_nodes(s, nodes, weights);
     Real sum = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j)
       sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
@@ -180,7 +180,6 @@ class LineResidual {
   /// few sums per point, no Bessel work) is differentiated by forward differences. Exterior form
   /// (L6) only; returns false where operator() would, or for the paper's form.
   bool jacobian(const Vector& x, Vector& r, Matrix& jac) const {
-    using std::abs;
     using std::log;
     using std::log1p;
     using std::sqrt;
@@ -210,34 +209,30 @@ class LineResidual {
       dright.setZero();
       Vector dan(nu), dbn(nu);
       std::vector<StripDerivatives> dn(count);
-      std::vector<StripFunctions<Real>> there(count);
       for (std::size_t j = 0; j < count; ++j) {
         dn[j] = strip_derivatives(s.a(nd.yp[j]), s.b(nd.yp[j]));
-        there[j] = dn[j].value;
-        df0[j] = there[j].f0 - here.f0;
-        dq[j] = there[j].q - here.q;
+        df0[j] = dn[j].value.f0 - here.f0;
+        dq[j] = dn[j].value.q - here.q;
       }
       Real ends = 0;
       const Real right = exterior_right(nd, dq, here.q, x0, Real(1), &wq, &ends);
       Real r34 = 0, rle = 0;
-      point_rows(d, y, here, nd, df0, right, r34, rle);
+      const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
       r[i] = r34 + v / p_.a_ref * rle;
       r[m + i] = rle;
-      // Node values: d F(y'_j) at fixed t'_j.
+      // Node values: d F(y'_j) at fixed t'_j; the differences' second terms via the weight sums.
       Real w0sum = 0, wqsum = 0;
       for (std::size_t j = 0; j < count; ++j) {
-        if (!(there[j].a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
-        const auto& dj = dn[j];
-        shape_gradient(s, nd.yp[j], there[j].a, dan, dbn);
         const Real w0 = nd.weight[j] / nd.dist[j];
+        w0sum += w0;
+        wqsum += wq[j];
+        const auto& dj = dn[j];
+        if (!(dj.value.a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
+        shape_gradient(s, nd.yp[j], dj.value.a, dan, dbn);
         dnode = dj.f0_a * dan + dj.f0_b * dbn;
         dlhs += w0 * dnode;
         dnode = dj.q_a * dan + dj.q_b * dbn;
         dright += wq[j] * dnode;
-      }
-      for (std::size_t j = 0; j < count; ++j) {
-        w0sum += nd.weight[j] / nd.dist[j];
-        wqsum += wq[j];
       }
       dlhs -= w0sum * df0_i;
       dright += (ends - wqsum) * dq_i;
@@ -257,9 +252,8 @@ class LineResidual {
       drhs[del] += scale34;
       const Vector dr34 = (dlhs - drhs) / scale34;
       // Leading edge: rle = (bessel - right) / (slope a_ref).
-      const Real z = a / v, e0 = special::bessel_k0_scaled(z), e1 = special::bessel_k1_scaled(z);
+      const Real z = a / v, e0 = edge.k0, e1 = edge.k1, slope = edge.slope, ri = dh.ri;
       const Real e0z = e0 - e1, e1z = e1 - e0 - e1 / z;
-      const Real ri = dh.ri, slope = c1 * a * (e1 + ri * e0);
       const Real bessel_a = c1 * (b * e1 + a * b * e1z / v - dh.g_a * e0 - here.g * e0z / v);
       const Real bessel_b = c1 * (a * e1 - dh.g_b * e0);
       const Real slope_a =
@@ -271,7 +265,7 @@ class LineResidual {
     }
     // Load (47), nodes fixed in y/l: d/d ln l of the integral is the integral itself.
     std::vector<Real> nodes, weights;
-    detail::append_graded_nodes<Quadrature>(nodes, weights, s.l, s.l / 2, end_width(s, s.l));
+    load_nodes(s, nodes, weights);
     Real sum = 0;
     Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
     for (std::size_t j = 0; j < nodes.size(); ++j) {
@@ -381,10 +375,16 @@ class LineResidual {
     return exp(x0 / p_.vtau) * ops.leading_edge_kernel(q, p_.vtau, y);
   }
 
+  /// e^z K0(z), e^z K1(z) at z = a/V and the leading-edge row's scale C1 a (e^z K1 + r_i e^z K0),
+  /// its slope in b at fixed a.
+  struct EdgeTerms {
+    Real k0, k1, slope;
+  };
+
   /// (34) and the leading-edge row at one point from the finite-part differences df0_j and the
-  /// right side of the leading-edge condition.
-  void point_rows(Real d, Real y, const StripFunctions<Real>& here, const PointNodes& nd,
-                  const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const {
+  /// right side of the leading-edge condition; returns the terms of the row's left side.
+  EdgeTerms point_rows(Real d, Real y, const StripFunctions<Real>& here, const PointNodes& nd,
+                       const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const {
     using std::log;
     const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
     Real fp = 0;
@@ -400,6 +400,7 @@ class LineResidual {
     const Real r_i = special::bessel_i1_over_i0_fast(Real((1 + p_.f) * a / v));
     const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
     rle = (bessel - right) / (slope * p_.a_ref);
+    return {k0, k1, slope};
   }
 
   /// G (36), F0 (33), Q (46) (as strip_functions) with their partial derivatives in a and b,
@@ -418,11 +419,9 @@ class LineResidual {
     const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())
                           ? Real(0.5)
                           : Real(1 - ri / alpha - ri * ri);
-    const Real k = v * f / (1 + f) - b;
-    const Real g = a * k * ri;
+    const StripFunctions<Real> value = strip_functions_from_ratio(c1, a, b, v, f, ri);
+    const Real k = v * f / (1 + f) - b, g = value.g;
     const Real g_a = k * (ri + alpha * ri_x), g_b = -a * ri;
-    // The values as strip_functions computes them (line_shape.hpp), with the same I1/I0.
-    const StripFunctions<Real> value{a, b, g, c1 * (a * a / 4 + g / 2), c1 * g * (v - b) / (2 * v)};
     return {value,
             g_a,
             g_b,
@@ -451,6 +450,12 @@ class LineResidual {
         tk = next;
       }
     }
+  }
+
+  /// The nodes and weights of the load integral (47) on [0, l], graded toward the end.
+  void load_nodes(const LineShape<Real>& s, std::vector<Real>& nodes,
+                  std::vector<Real>& weights) const {
+    detail::append_graded_nodes<Quadrature>(nodes, weights, s.l, s.l / 2, end_width(s, s.l));
   }
 
   /// Finest panel toward the end of a side of length len: the distance of the nearest pole of G

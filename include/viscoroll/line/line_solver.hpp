@@ -324,7 +324,7 @@ class LineSolver {
     int stalled = 0;
     // |r|^2 at the ends of the last iterations, for the slow-progress test below.
     std::vector<Real> history;
-    const auto difference_jacobian = [&]() {
+    const auto refresh_jacobian = [&]() {
       if (options_.jacobian == LineJacobian::analytic && res.jacobian(x, rt, jac)) {
         fresh = true;
         return true;
@@ -345,7 +345,7 @@ class LineSolver {
       return true;
     };
     for (; out.iterations < options_.max_iterations; ++out.iterations) {
-      if (out.iterations == 0 && !difference_jacobian()) {
+      if (out.iterations == 0 && !refresh_jacobian()) {
         out.undefined = true;
         out.reason = "Jacobian undefined";
         return out;
@@ -375,7 +375,7 @@ class LineSolver {
         if (accepted || fresh) break;
         mu = std::max(Real(mu / pow(Real(8), Real(attempts))),
                       Real(1e-12));  // the damping of before the tries
-        if (!difference_jacobian()) {
+        if (!refresh_jacobian()) {
           out.undefined = true;
           out.reason = "Jacobian undefined";
           return out;
@@ -406,7 +406,7 @@ class LineSolver {
           ++out.iterations;
           return out;
         }
-        if (!difference_jacobian()) {
+        if (!refresh_jacobian()) {
           out.undefined = true;
           out.reason = "Jacobian undefined";
           return out;
@@ -438,7 +438,7 @@ class LineSolver {
       // iterate sits at a least-squares minimum with no root of the equations near it.
       if (rmax > residual_tol && reduction < sqrt(eps)) {
         if (!newton_step) {
-          if (!fresh && !difference_jacobian()) {
+          if (!fresh && !refresh_jacobian()) {
             out.undefined = true;
             out.reason = "Jacobian undefined";
             return out;
