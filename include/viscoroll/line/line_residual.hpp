@@ -19,10 +19,12 @@
 //   V int e^-t dI/dx dt = int (Q(y') - Q(y)) K(s) dy' + Q(y) V int e^-t x_t sum_d 1/(h_d (h_d + d))
 //   dt, K(s) = -V int_0^inf e^-t x_t (x_t^2 + s^2)^(-3/2) dt,  x_t = x0 + V t,
 // every kernel positive or of one sign, so no term is a difference of large numbers.
-// Nodes in s: panels doubling from x0/2 (the kernels' scale) and halving toward the end of the
-// contact down to the distance of the nearest pole of G (where I0(alpha) = 0, just beyond +-l
-// when a0/V tau is large, docs/line-operators.md); nodes in t: panels doubling from
-// min(x0/V, 1)/2 to -ln(eps) + 8.
+// Nodes (docs/theory.md section 7): in s, equal panels in ln(s/(len - s)) between a first panel
+// on the kernels' scale x0 and a last one on the scale of the nearest pole of G beyond the end
+// (where I0(alpha) = 0, just beyond +-l when a0/V tau is large, docs/line-operators.md); in t,
+// equal panels in ln(1 + t/c), c = min(x0/V, 1), up to -ln(eps) + 8. The panels' width follows
+// from the distance of the singularities in these variables (pi/2) and the rule's order, so that
+// every integral is exact to rounding.
 #pragma once
 
 #include <Eigen/Dense>
@@ -297,13 +299,14 @@ class LineResidual {
     nd.d1 = s.l - y;
     nd.d2 = s.l + y;
     const Real c = std::min(Real(x0 / p_.vtau), Real(1));
-    detail::append_graded_nodes<Quadrature>(nd.tn, nd.tw, t_max_, c / 2, t_max_);
+    detail::append_log_mapped_nodes<Quadrature>(nd.tn, nd.tw, t_max_, c,
+                                                boost::math::constants::half_pi<Real>());
     std::vector<Real> sn, sw;
     for (int side = 0; side < 2; ++side) {
       const Real len = side == 0 ? nd.d1 : nd.d2;
       sn.clear();
       sw.clear();
-      detail::append_graded_nodes<Quadrature>(sn, sw, len, x0 / 2, end_width(s, len));
+      append_side_nodes(s, len, side == 0 ? nd.d2 : nd.d1, x0, sn, sw);
       for (std::size_t j = 0; j < sn.size(); ++j) {
         const Real yp = side == 0 ? Real(y + sn[j]) : Real(y - sn[j]);
         const Real dist = side == 0 ? Real(yp - y) : Real(y - yp);  // recomputed: rounding of yp
@@ -313,6 +316,27 @@ class LineResidual {
         nd.weight.push_back(sw[j]);
       }
     }
+  }
+
+  /// The nodes of one side's integrals over s in [0, len], y' = y +- s (docs/theory.md section 7).
+  /// Equal panels in w = ln(s/(len - s)), which puts every singular point of the integrands at
+  /// |Im w| >= pi/2, between two end panels:
+  /// - [0, first] keeps off the kernels' singularities at s = +-i x_t (x_t >= x0) and the nearest
+  ///   singular point behind s = 0 (the other end of the contact at s = -other, a branch point of
+  ///   a(y) in the variable sqrt(1 - t^2); else the poles of G beyond it);
+  /// - [len - last, len], in the variable tau = sqrt((len - s)/last) (a branch point at the end is
+  ///   regular in tau), is a fifth of the distance to s = 0, a quarter of the distance of the poles
+  ///   of G beyond the end (end_width), and of the scale on which the Chebyshev series of a(y), b(y)
+  ///   vary at the end: l/(2N) in t^2, l/(2N^2) in sqrt(1 - t^2), where u is a square root of l - y;
+  /// - the equal panels are no wider than 8/N in w, for the same series.
+  void append_side_nodes(const LineShape<Real>& s, Real len, Real other, Real x0,
+                         std::vector<Real>& sn, std::vector<Real>& sw) const {
+    const Real behind = basis_ == LineBasis::s ? other : Real(other + pole_distance(s));
+    const Real first = std::min({Real(x0 / 2), Real(len / 4), behind});
+    const Real series = basis_ == LineBasis::s ? Real(s.l / (2 * n_ * n_)) : Real(s.l / (2 * n_));
+    const Real last = std::min({end_width(s, len), Real(len / 5), series});
+    detail::append_logit_mapped_nodes<Quadrature>(
+        sn, sw, len, first, last, boost::math::constants::half_pi<Real>(), Real(8) / n_);
   }
 
   /// (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt, (L6), from dq_j = Q(y'_j) - Q(y) and
@@ -455,18 +479,22 @@ class LineResidual {
   /// The nodes and weights of the load integral (47) on [0, l], graded toward the end.
   void load_nodes(const LineShape<Real>& s, std::vector<Real>& nodes,
                   std::vector<Real>& weights) const {
-    detail::append_graded_nodes<Quadrature>(nodes, weights, s.l, s.l / 2, end_width(s, s.l));
+    append_side_nodes(s, s.l, s.l, s.l, nodes, weights);
   }
 
-  /// Finest panel toward the end of a side of length len: the distance of the nearest pole of G
-  /// beyond y = +-l, where (1 + f) a(y) / V tau = +- i j_{0,1} (a^2 < 0 just past the end).
-  Real end_width(const LineShape<Real>& s, Real len) const {
-    using std::exp;
+  /// The distance of the nearest pole of G beyond y = +-l, where (1 + f) a(y) / V tau = +- i j_{0,1}
+  /// (a^2 < 0 just past the end).
+  Real pole_distance(const LineShape<Real>& s) const {
     const Real j01 = Real(2.404825557695772768621631879326454643124L);
     const Real a_end = s.a_ref * s.end_factor();
     const Real cc = j01 * p_.vtau / ((1 + p_.f) * a_end);
-    const Real beyond = s.l * cc * cc / 2;  // 1 - t^2 = -cc^2 at t = 1 + cc^2/2
-    return std::max(Real(beyond / 4), Real(len * std::numeric_limits<Real>::epsilon()));
+    return s.l * cc * cc / 2;  // 1 - t^2 = -cc^2 at t = 1 + cc^2/2
+  }
+
+  /// The last panel toward the end of a side of length len: a quarter of pole_distance.
+  Real end_width(const LineShape<Real>& s, Real len) const {
+    return std::max(Real(pole_distance(s) / 4),
+                    Real(len * std::numeric_limits<Real>::epsilon()));
   }
 
   LineProblem<Real> p_;

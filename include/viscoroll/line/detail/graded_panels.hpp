@@ -16,6 +16,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace viscoroll::detail {
@@ -71,6 +73,94 @@ void append_graded_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length
       w.push_back(half * Real(wt[j]));
     }
   });
+}
+
+/// The widest panel, in a variable w in which the integrand is analytic in the strip
+/// |Im w| < strip, on which the Quadrature's n-point rule (exact to degree 2n - 1, Gauss-Legendre)
+/// has the error bound rho^(-2n) <= eps/64 of the Bernstein ellipse through the worst-placed
+/// singularity (at distance `strip` above the panel's centre): with half-width h,
+/// rho = d/h + sqrt(1 + (d/h)^2) = exp(asinh(d/h)), so 2 n asinh(strip/h) >= ln(64/eps) (Davis &
+/// Rabinowitz, Methods of Numerical Integration, 4.6; docs/theory.md section 7).
+template <class Quadrature, class Real>
+Real strip_panel_width(Real strip) {
+  using std::log;
+  using std::sinh;
+  const Real digits = log(Real(4096) / std::numeric_limits<Real>::epsilon());
+  return 2 * strip / sinh(digits / (2 * Quadrature::points));
+}
+
+/// The nodes and weights of int_0^length g(t) dt in the variable w = ln(1 + t/c) (t = c (e^w - 1),
+/// dt = c e^w dw) on equal panels no wider than strip_panel_width(strip): for an integrand analytic
+/// in w in |Im w| < strip, as g(t) = e^-t k(x0 + V t) with k singular only where x0 + V t is
+/// imaginary and c = x0/V (strip = pi/2). Appends (node, weight) pairs.
+template <class Quadrature, class Real>
+void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real length, Real c,
+                             Real strip) {
+  using std::ceil;
+  using std::exp;
+  using std::expm1;
+  using std::log1p;
+  if (!(length > 0)) return;
+  const auto& x = Quadrature::nodes();
+  const auto& wt = Quadrature::weights();
+  const Real top = log1p(length / c);
+  const int panels = std::max(1, int(ceil(top / strip_panel_width<Quadrature>(strip))));
+  const Real half = top / (2 * panels);
+  for (int k = 0; k < panels; ++k) {
+    const Real mid = (2 * k + 1) * half;
+    for (int j = 0; j < Quadrature::points; ++j) {
+      const Real v = mid + half * Real(x[j]);
+      t.push_back(c * expm1(v));
+      w.push_back(half * Real(wt[j]) * c * exp(v));
+    }
+  }
+}
+
+/// The nodes and weights of int_0^length g(s) ds for g with singular points near both ends of
+/// the interval (on the scale `first` at 0, `last` at length): the panel [0, first] as it is, the
+/// panel [length - last, length] in the variable tau = sqrt((length - s)/last), and between them
+/// equal panels, no wider than
+/// strip_panel_width(strip), in the variable w = ln(s / (length - s)) (s = length / (1 + e^-w),
+/// ds = s (length - s) / length dw), which maps a singularity at s = +-i h (h > 0) to |Im w| >=
+/// pi/2 and one at s < 0 or s > length to |Im w| = pi. Requires 0 < first, 0 < last and
+/// first + last < length; appends (node, weight) pairs.
+template <class Quadrature, class Real>
+void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
+                               Real last, Real strip, Real max_width) {
+  using std::ceil;
+  using std::exp;
+  using std::log;
+  const auto& x = Quadrature::nodes();
+  const auto& wt = Quadrature::weights();
+  const auto plain = [&](Real lo, Real hi) {
+    const Real half = (hi - lo) / 2, mid = (lo + hi) / 2;
+    for (int j = 0; j < Quadrature::points; ++j) {
+      s.push_back(mid + half * Real(x[j]));
+      w.push_back(half * Real(wt[j]));
+    }
+  };
+  plain(Real(0), first);
+  const Real lo = log(first / (length - first)), hi = log((length - last) / last);
+  const Real width = std::min(strip_panel_width<Quadrature>(strip), max_width);
+  const int panels = std::max(1, int(ceil((hi - lo) / width)));
+  const Real half = (hi - lo) / (2 * panels);
+  for (int k = 0; k < panels; ++k) {
+    const Real mid = lo + (2 * k + 1) * half;
+    for (int j = 0; j < Quadrature::points; ++j) {
+      const Real e = exp(-(mid + half * Real(x[j])));
+      const Real node = length / (1 + e);
+      s.push_back(node);
+      w.push_back(half * Real(wt[j]) * node * e / (1 + e));  // s (length - s) / length
+    }
+  }
+  // The last panel in s = length - last tau^2, tau in [0, 1] (ds = 2 last tau dtau): an integrand
+  // with a branch point (length - s)^(k/2) at the end (a(y) in the variable sqrt(1 - t^2),
+  // line_shape.hpp) is analytic in tau.
+  for (int j = 0; j < Quadrature::points; ++j) {
+    const Real tau = (1 + Real(x[j])) / 2;
+    s.push_back(length - last * tau * tau);
+    w.push_back(Real(wt[j]) * last * tau);
+  }
 }
 
 }  // namespace viscoroll::detail
