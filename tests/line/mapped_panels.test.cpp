@@ -80,14 +80,13 @@ TEMPLATE_TEST_CASE("panels: ln(s/(L - s)) nodes with mapped ends integrate to ro
   using Real = TestType;
   using Q = GaussLegendre<Real, 12>;
   const Real eps = std::numeric_limits<Real>::epsilon();
-  const Real pi2 = boost::math::constants::half_pi<Real>();
   const Real big = std::numeric_limits<Real>::max();
   SECTION("poles at s = +-i h: int_0^L ds/(s^2 + h^2) = atan(L/h)/h") {
     const Real len = 5;
     for (const Real h : {Real(1e-3), Real(0.3), Real(2), Real(40)}) {
       std::vector<Real> s, w;
       viscoroll::detail::append_logit_mapped_nodes<Q>(s, w, len, std::min(h / 2, len / 4), len / 5,
-                                                      pi2, big);
+                                                      big);
       const Real got = sum_of(w, s, [&](Real x) { return 1 / (x * x + h * h); });
       const Real exact = std::atan(len / h) / h;
       INFO("h = " << h << ": " << s.size() << " nodes");
@@ -101,11 +100,29 @@ TEMPLATE_TEST_CASE("panels: ln(s/(L - s)) nodes with mapped ends integrate to ro
     for (const Real delta : {Real(1e-9), Real(1e-4), Real(0.1)}) {
       std::vector<Real> s, w;
       viscoroll::detail::append_logit_mapped_nodes<Q>(s, w, len, std::min(delta, len / 4), len / 5,
-                                                      pi2, big);
+                                                      big);
       const Real got = sum_of(w, s, [&](Real x) { return 1 / (x + delta); });
       const Real exact = std::log((len + delta) / delta);
       INFO("delta = " << delta << ": " << s.size() << " nodes");
       CHECK(std::abs(got / exact - 1) < 16 * eps);
+    }
+  }
+  SECTION("a pole delta beyond the end: int_0^L ds/(L + delta - s) = ln((L + delta)/delta)") {
+    // delta = 2^-k, so L + delta is exact and, by Sterbenz's lemma, so is (L + delta) - s for
+    // every node s >= (L + delta)/2. The nodes themselves are rounded to eps s, which moves the
+    // integrand at a node by eps s/(L + delta - s)^2: that sum is part of the bound.
+    const Real len = 2;
+    for (const int k : {30, 13, 3}) {
+      const Real delta = std::ldexp(Real(1), -k);
+      std::vector<Real> s, w;
+      viscoroll::detail::append_logit_mapped_nodes<Q>(s, w, len, len / 4,
+                                                      std::min(delta / 4, len / 5), big);
+      const Real got = sum_of(w, s, [&](Real x) { return 1 / ((len + delta) - x); });
+      const Real nodes = sum_of(
+          w, s, [&](Real x) { return eps * x / (((len + delta) - x) * ((len + delta) - x)); });
+      const Real exact = std::log((len + delta) / delta);
+      INFO("delta = " << delta << ": " << s.size() << " nodes, node rounding " << nodes / exact);
+      CHECK(std::abs(got - exact) < 16 * eps * exact + nodes);
     }
   }
   SECTION("a branch point at the end: int_0^L (L - s)^(3/2) ds = (2/5) L^(5/2)") {
@@ -113,7 +130,7 @@ TEMPLATE_TEST_CASE("panels: ln(s/(L - s)) nodes with mapped ends integrate to ro
     // tau = sqrt((L - s)/last) the integrand is a polynomial.
     const Real len = 3;
     std::vector<Real> s, w;
-    viscoroll::detail::append_logit_mapped_nodes<Q>(s, w, len, len / 4, len / 5, pi2, big);
+    viscoroll::detail::append_logit_mapped_nodes<Q>(s, w, len, len / 4, len / 5, big);
     const Real got = sum_of(w, s, [&](Real x) { return std::pow(len - x, Real(1.5)); });
     const Real exact = Real(2) / 5 * std::pow(len, Real(2.5));
     CHECK(std::abs(got / exact - 1) < 16 * eps);

@@ -368,9 +368,10 @@ TEST_CASE("stability: line solver in float and long double", "[stability][line][
 
 TEST_CASE("stability: line solver, one iterated cell in cpp_bin_float_50",
           "[stability][line][multiprecision][slow]") {
-  // The paper's cell (V tau = a0, f = 9, l0/a0 = 5) at terms = 2, GaussLegendre<mp, 24>: 68 s in
-  // a Release build (21 iterations; 294 s with a difference Jacobian at every iteration), far
-  // longer under the sanitizers or without optimisation, where it is not run.
+  // The paper's cell (V tau = a0, f = 9, l0/a0 = 5) at terms = 2, GaussLegendre<mp, 24>: 101 s in
+  // a Release build (68 s before the panels followed the scalar's epsilon, theory.md section 7;
+  // 294 s with a difference Jacobian at every iteration), far longer under the sanitizers or
+  // without optimisation, where it is not run.
 #if defined(NDEBUG)
   constexpr bool optimised = !stability::sanitized;
 #else

@@ -320,7 +320,7 @@ class LineResidual {
 
   /// The nodes of one side's integrals over s in [0, len], y' = y +- s (docs/theory.md section 7).
   /// Equal panels in w = ln(s/(len - s)), which puts every singular point of the integrands at
-  /// |Im w| >= pi/2, between two end panels:
+  /// |Im w| >= pi/2 (and at |Im w| = pi for w >= 1), between two end panels:
   /// - [0, first] keeps off the kernels' singularities at s = +-i x_t (x_t >= x0) and the nearest
   ///   singular point behind s = 0 (the other end of the contact at s = -other, a branch point of
   ///   a(y) in the variable sqrt(1 - t^2); else the poles of G beyond it);
@@ -335,8 +335,7 @@ class LineResidual {
     const Real first = std::min({Real(x0 / 2), Real(len / 4), behind});
     const Real series = basis_ == LineBasis::s ? Real(s.l / (2 * n_ * n_)) : Real(s.l / (2 * n_));
     const Real last = std::min({end_width(s, len), Real(len / 5), series});
-    detail::append_logit_mapped_nodes<Quadrature>(
-        sn, sw, len, first, last, boost::math::constants::half_pi<Real>(), Real(8) / n_);
+    detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_);
   }
 
   /// (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt, (L6), from dq_j = Q(y'_j) - Q(y) and

@@ -226,11 +226,11 @@ class LineSolver {
     return sol;
   }
 
-  /// Terms of the continuation stages that lead to `terms`: 2, 3, 4, 6, 8, 12, 16, 24, ... below
+  /// Terms of the continuation stages that lead to `terms`: 2, 4, 8, 16, 32 below
   /// it, then `terms` itself (docs/line-solver.md, "Continuation in N").
   static std::vector<int> continuation_stages(int terms) {
     std::vector<int> stages;
-    for (int n : {2, 3, 4, 6, 8, 12, 16, 24, 32, 48})
+    for (int n : {2, 4, 8, 16, 32})
       if (n < terms) stages.push_back(n);
     stages.push_back(terms);
     return stages;

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -119,14 +120,16 @@ void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real le
 /// The nodes and weights of int_0^length g(s) ds for g with singular points near both ends of
 /// the interval (on the scale `first` at 0, `last` at length): the panel [0, first] as it is, the
 /// panel [length - last, length] in the variable tau = sqrt((length - s)/last), and between them
-/// equal panels, no wider than
-/// strip_panel_width(strip), in the variable w = ln(s / (length - s)) (s = length / (1 + e^-w),
-/// ds = s (length - s) / length dw), which maps a singularity at s = +-i h (h > 0) to |Im w| >=
-/// pi/2 and one at s < 0 or s > length to |Im w| = pi. Requires 0 < first, 0 < last and
-/// first + last < length; appends (node, weight) pairs.
+/// equal panels in the variable w = ln(s / (length - s)) (s = length / (1 + e^-w),
+/// ds = s (length - s) / length dw), no wider than max_width. The map puts a singularity at
+/// s = +-i h (h > 0) at Re w < 0, pi/2 < |Im w| < pi, and one at s < 0 or s > length at
+/// |Im w| = pi; so the panels are strip_panel_width(pi/2) wide for w < 1 and
+/// strip_panel_width(pi) beyond, where the points s = +-i h, for every h, keep rho >= 6.58 > 6.35
+/// (docs/theory.md section 7). Requires 0 < first, 0 < last and first + last < length; appends
+/// (node, weight) pairs.
 template <class Quadrature, class Real>
 void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
-                               Real last, Real strip, Real max_width) {
+                               Real last, Real max_width) {
   using std::ceil;
   using std::exp;
   using std::log;
@@ -139,20 +142,26 @@ void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real 
       w.push_back(half * Real(wt[j]));
     }
   };
+  const auto mapped = [&](Real lo, Real hi, Real width) {
+    if (!(hi > lo)) return;
+    const int panels = std::max(1, int(ceil((hi - lo) / std::min(width, max_width))));
+    const Real half = (hi - lo) / (2 * panels);
+    for (int k = 0; k < panels; ++k) {
+      const Real mid = lo + (2 * k + 1) * half;
+      for (int j = 0; j < Quadrature::points; ++j) {
+        const Real e = exp(-(mid + half * Real(x[j])));
+        const Real node = length / (1 + e);
+        s.push_back(node);
+        w.push_back(half * Real(wt[j]) * node * e / (1 + e));  // s (length - s) / length
+      }
+    }
+  };
   plain(Real(0), first);
   const Real lo = log(first / (length - first)), hi = log((length - last) / last);
-  const Real width = std::min(strip_panel_width<Quadrature>(strip), max_width);
-  const int panels = std::max(1, int(ceil((hi - lo) / width)));
-  const Real half = (hi - lo) / (2 * panels);
-  for (int k = 0; k < panels; ++k) {
-    const Real mid = lo + (2 * k + 1) * half;
-    for (int j = 0; j < Quadrature::points; ++j) {
-      const Real e = exp(-(mid + half * Real(x[j])));
-      const Real node = length / (1 + e);
-      s.push_back(node);
-      w.push_back(half * Real(wt[j]) * node * e / (1 + e));  // s (length - s) / length
-    }
-  }
+  const Real pi = boost::math::constants::pi<Real>();
+  const Real split = std::min(std::max(lo, Real(1)), hi);
+  mapped(lo, split, strip_panel_width<Quadrature>(pi / 2));
+  mapped(split, hi, strip_panel_width<Quadrature>(pi));
   // The last panel in s = length - last tau^2, tau in [0, 1] (ds = 2 last tau dtau): an integrand
   // with a branch point (length - s)^(k/2) at the end (a(y) in the variable sqrt(1 - t^2),
   // line_shape.hpp) is analytic in tau.
