@@ -16,7 +16,7 @@
 //          discretisation errors).
 //
 // Line run times. A cold LineSolver::solve at `terms` = N runs the continuation stages
-// {2, 3, 4, 6, 8, 12, 16, 24, 32, 48 below N} and then N, each seeded by the previous one
+// {2, 4, 8, 16, 32 below N} and then N, each seeded by the previous one
 // (docs/line-solver.md, "Continuation in N"); a solve seeded with a solution goes straight to its
 // own N. So the program solves each stage once, seeded by the previous stage's solution, and a
 // cold solve at N costs the sum of its stages' times: the same arithmetic, hence the same values
@@ -121,7 +121,7 @@ viscoroll::LineSolverD line_solver(int terms) {
 }
 
 /// The continuation stages of a cold solve (LineSolver::continuation_stages, docs/line-solver.md).
-const std::vector<int> chain{2, 3, 4, 6, 8, 12, 16, 24, 32, 48};
+const std::vector<int> chain{2, 4, 8, 16, 32};
 
 /// The line solver at every N of `terms` for one speed, each point timed as a cold solve.
 class LineSeries {
