@@ -320,7 +320,7 @@ class LineResidual {
 
   /// The nodes of one side's integrals over s in [0, len], y' = y +- s (docs/theory.md section 7).
   /// Equal panels in w = ln(s/(len - s)), which puts every singular point of the integrands at
-  /// |Im w| >= pi/2 (and at |Im w| = pi for w >= 1), between two end panels:
+  /// |Im w| >= pi/2 (and all but s = +-i x_t at |Im w| = pi), between two end panels:
   /// - [0, first] keeps off the kernels' singularities at s = +-i x_t (x_t >= x0) and the nearest
   ///   singular point behind s = 0 (the other end of the contact at s = -other, a branch point of
   ///   a(y) in the variable sqrt(1 - t^2); else the poles of G beyond it);
@@ -475,7 +475,7 @@ class LineResidual {
     }
   }
 
-  /// The nodes and weights of the load integral (47) on [0, l], graded toward the end.
+  /// The nodes and weights of the load integral (47) on [0, l]: a side's nodes (no kernel).
   void load_nodes(const LineShape<Real>& s, std::vector<Real>& nodes,
                   std::vector<Real>& weights) const {
     append_side_nodes(s, s.l, s.l, s.l, nodes, weights);
