@@ -326,8 +326,9 @@ class LineResidual {
   ///   a(y) in the variable sqrt(1 - t^2); else the poles of G beyond it);
   /// - [len - last, len], in the variable tau = sqrt((len - s)/last) (a branch point at the end is
   ///   regular in tau), is a fifth of the distance to s = 0, a quarter of the distance of the poles
-  ///   of G beyond the end (end_width), and of the scale on which the Chebyshev series of a(y), b(y)
-  ///   vary at the end: l/(2N) in t^2, l/(2N^2) in sqrt(1 - t^2), where u is a square root of l - y;
+  ///   of G beyond the end (end_width), and of the scale on which the Chebyshev series of a(y),
+  ///   b(y) vary at the end: l/(2N) in t^2, l/(2N^2) in sqrt(1 - t^2) (where u + 1 grows as
+  ///   sqrt(l - y));
   /// - the equal panels are no wider than 8/N in w, for the same series.
   void append_side_nodes(const LineShape<Real>& s, Real len, Real other, Real x0,
                          std::vector<Real>& sn, std::vector<Real>& sw) const {
@@ -475,14 +476,15 @@ class LineResidual {
     }
   }
 
-  /// The nodes and weights of the load integral (47) on [0, l]: a side's nodes (no kernel).
+  /// The nodes and weights of the load integral (47) on [0, l]: a side's nodes from y = 0, with
+  /// the other end at distance l and no kernel (its scale taken as l, so the first panel is l/4).
   void load_nodes(const LineShape<Real>& s, std::vector<Real>& nodes,
                   std::vector<Real>& weights) const {
     append_side_nodes(s, s.l, s.l, s.l, nodes, weights);
   }
 
-  /// The distance of the nearest pole of G beyond y = +-l, where (1 + f) a(y) / V tau = +- i j_{0,1}
-  /// (a^2 < 0 just past the end).
+  /// The distance of the nearest pole of G beyond y = +-l, where (1 + f) a(y) / V tau = +- i
+  /// j_{0,1} (a^2 < 0 just past the end).
   Real pole_distance(const LineShape<Real>& s) const {
     const Real j01 = Real(2.404825557695772768621631879326454643124L);
     const Real a_end = s.a_ref * s.end_factor();
@@ -492,8 +494,7 @@ class LineResidual {
 
   /// The last panel toward the end of a side of length len: a quarter of pole_distance.
   Real end_width(const LineShape<Real>& s, Real len) const {
-    return std::max(Real(pole_distance(s) / 4),
-                    Real(len * std::numeric_limits<Real>::epsilon()));
+    return std::max(Real(pole_distance(s) / 4), Real(len * std::numeric_limits<Real>::epsilon()));
   }
 
   LineProblem<Real> p_;

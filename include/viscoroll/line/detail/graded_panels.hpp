@@ -1,18 +1,24 @@
-// viscoroll: composite quadrature on [0, L] graded geometrically toward 0.
+// viscoroll: composite quadrature on [0, L], graded toward its singular ends.
 //
-// Internals of viscoroll/line/line_operators.hpp and line_residual.hpp (docs/line-operators.md),
-// as an integral or as a node set. An integrand with a
-// (nearly) singular point at s = 0 of scale h (a pole at s = +-i h, a logarithm, s ln s) is
-// integrated on the panels
+// Internals of viscoroll/line/line_operators.hpp, line_residual.hpp and line_solver.hpp
+// (docs/line-operators.md, docs/theory.md section 7), as an integral or as a node set.
+//
+// Geometric grading (graded_integral, append_graded_nodes): an integrand with a (nearly) singular
+// point at s = 0 of scale h (a pole at s = +-i h, a logarithm, s ln s) is integrated on the panels
 //   [0, h 2^-K], [h 2^-K, h 2^-K+1], ..., [h/2, h], [h, 2h], [2h, 4h], ...,
 // and, once a doubling would end closer to L than the panel's width, on panels halving toward L,
 //   [s, (s + L)/2], ..., [L - L 2^-E, L],
 // each by the fixed rule of the quadrature policy. The grading toward L is for integrands
 // F(y +- s) whose F has a complex singularity near the end y' = +-l of the contact (G of Eq. (36)
 // has poles where I0((1 + f) a(y) / V tau) = 0, close to y = +-l when a0 / V tau is large): a
-// singularity at distance delta from the end is resolved once L 2^-E <= delta. On a panel [s, 2s] a singularity at 0 or at
-// +-i h with h <= s lies at least three half-widths from the panel's centre, so an N-point
-// Gauss-Legendre rule converges like (3 + sqrt 8)^(-2N) (Bernstein ellipse rho ~ 5.8) there.
+// singularity at distance delta from the end is resolved once L 2^-E <= delta. On a panel [s, 2s]
+// a singularity at 0 or at +-i h with h <= s lies at least three half-widths from the panel's
+// centre, so an N-point Gauss-Legendre rule converges like (3 + sqrt 8)^(-2N) (Bernstein ellipse
+// rho ~ 5.8) there.
+//
+// Mapped panels (append_log_mapped_nodes, append_logit_mapped_nodes): equal panels in a variable
+// in which every singular point lies at a known distance from the real axis, as wide as the rule's
+// order and the scalar's epsilon allow (strip_panel_width): the line residual's integrals.
 #pragma once
 
 #include <algorithm>
@@ -22,6 +28,33 @@
 #include <vector>
 
 namespace viscoroll::detail {
+
+/// Appends the nodes and weights of the Quadrature's rule on the panel [lo, hi].
+template <class Quadrature, class Real>
+void append_panel(std::vector<Real>& s, std::vector<Real>& w, Real lo, Real hi) {
+  const auto& x = Quadrature::nodes();
+  const auto& wt = Quadrature::weights();
+  const Real half = (hi - lo) / 2, mid = (lo + hi) / 2;
+  for (int j = 0; j < Quadrature::points; ++j) {
+    s.push_back(mid + half * Real(x[j]));
+    w.push_back(half * Real(wt[j]));
+  }
+}
+
+/// Calls node(v, weight) for the Quadrature's nodes v on equal panels of [lo, hi], as few as keep
+/// each panel no wider than `width`; weight includes dv.
+template <class Quadrature, class Real, class Node>
+void for_each_equal_panel_node(Real lo, Real hi, Real width, const Node& node) {
+  using std::ceil;
+  const auto& x = Quadrature::nodes();
+  const auto& wt = Quadrature::weights();
+  const int panels = std::max(1, int(ceil((hi - lo) / width)));
+  const Real half = (hi - lo) / (2 * panels);
+  for (int k = 0; k < panels; ++k) {
+    const Real mid = lo + (2 * k + 1) * half;
+    for (int j = 0; j < Quadrature::points; ++j) node(mid + half * Real(x[j]), half * Real(wt[j]));
+  }
+}
 
 /// Calls panel(lo, hi) for the panels [0, first], then doubling, but never ending a panel closer
 /// to `length` than the panel is wide while more than `finest` remains (a singularity just beyond
@@ -63,17 +96,10 @@ template <class Quadrature, class Real>
 void append_graded_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
                          Real finest) {
   if (!(length > 0)) return;
-  const auto& x = Quadrature::nodes();
-  const auto& wt = Quadrature::weights();
   Real h = std::min(first, length);
   if (length > finest) h = std::min(h, Real(length / 2));
-  for_each_graded_panel(length, h, finest, [&](Real lo, Real hi) {
-    const Real half = (hi - lo) / 2, mid = (lo + hi) / 2;
-    for (int j = 0; j < Quadrature::points; ++j) {
-      s.push_back(mid + half * Real(x[j]));
-      w.push_back(half * Real(wt[j]));
-    }
-  });
+  for_each_graded_panel(length, h, finest,
+                        [&](Real lo, Real hi) { append_panel<Quadrature>(s, w, lo, hi); });
 }
 
 /// The widest panel, in a variable w in which the integrand is analytic in the strip
@@ -98,24 +124,16 @@ Real strip_panel_width(Real strip) {
 template <class Quadrature, class Real>
 void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real length, Real c,
                              Real strip) {
-  using std::ceil;
   using std::exp;
   using std::expm1;
   using std::log1p;
   if (!(length > 0)) return;
-  const auto& x = Quadrature::nodes();
-  const auto& wt = Quadrature::weights();
-  const Real top = log1p(length / c);
-  const int panels = std::max(1, int(ceil(top / strip_panel_width<Quadrature>(strip))));
-  const Real half = top / (2 * panels);
-  for (int k = 0; k < panels; ++k) {
-    const Real mid = (2 * k + 1) * half;
-    for (int j = 0; j < Quadrature::points; ++j) {
-      const Real v = mid + half * Real(x[j]);
-      t.push_back(c * expm1(v));
-      w.push_back(half * Real(wt[j]) * c * exp(v));
-    }
-  }
+  for_each_equal_panel_node<Quadrature>(Real(0), Real(log1p(length / c)),
+                                        strip_panel_width<Quadrature>(strip),
+                                        [&](Real v, Real weight) {
+                                          t.push_back(c * expm1(v));
+                                          w.push_back(weight * c * exp(v));
+                                        });
 }
 
 /// The nodes and weights of int_0^length g(s) ds for g with singular points near both ends of
@@ -132,33 +150,19 @@ void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real le
 template <class Quadrature, class Real>
 void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
                                Real last, Real max_width) {
-  using std::ceil;
   using std::exp;
   using std::log;
-  const auto& x = Quadrature::nodes();
-  const auto& wt = Quadrature::weights();
-  const auto plain = [&](Real lo, Real hi) {
-    const Real half = (hi - lo) / 2, mid = (lo + hi) / 2;
-    for (int j = 0; j < Quadrature::points; ++j) {
-      s.push_back(mid + half * Real(x[j]));
-      w.push_back(half * Real(wt[j]));
-    }
-  };
   const auto mapped = [&](Real lo, Real hi, Real width) {
     if (!(hi > lo)) return;
-    const int panels = std::max(1, int(ceil((hi - lo) / std::min(width, max_width))));
-    const Real half = (hi - lo) / (2 * panels);
-    for (int k = 0; k < panels; ++k) {
-      const Real mid = lo + (2 * k + 1) * half;
-      for (int j = 0; j < Quadrature::points; ++j) {
-        const Real e = exp(-(mid + half * Real(x[j])));
-        const Real node = length / (1 + e);
-        s.push_back(node);
-        w.push_back(half * Real(wt[j]) * node * e / (1 + e));  // s (length - s) / length
-      }
-    }
+    for_each_equal_panel_node<Quadrature>(
+        lo, hi, std::min(width, max_width), [&](Real v, Real weight) {
+          const Real e = exp(-v);
+          const Real node = length / (1 + e);
+          s.push_back(node);
+          w.push_back(weight * node * e / (1 + e));  // ds/dw = s (length - s) / length
+        });
   };
-  plain(Real(0), first);
+  append_panel<Quadrature>(s, w, Real(0), first);
   const Real lo = log(first / (length - first)), hi = log((length - last) / last);
   const Real pi = boost::math::constants::pi<Real>();
   const Real split = std::min(std::max(lo, Real(2)), hi);
@@ -167,6 +171,8 @@ void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real 
   // The last panel in s = length - last tau^2, tau in [0, 1] (ds = 2 last tau dtau): an integrand
   // with a branch point (length - s)^(k/2) at the end (a(y) in the variable sqrt(1 - t^2),
   // line_shape.hpp) is analytic in tau.
+  const auto& x = Quadrature::nodes();
+  const auto& wt = Quadrature::weights();
   for (int j = 0; j < Quadrature::points; ++j) {
     const Real tau = (1 + Real(x[j])) / 2;
     s.push_back(length - last * tau * tau);
