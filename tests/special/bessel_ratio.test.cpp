@@ -6,10 +6,12 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace {
@@ -299,9 +301,72 @@ TEST_CASE("bessel_i1_over_i0_fast: double without promotion, within 4 eps; other
     worst = std::max(worst, error);
   }
   CHECK(worst <= 4);
+  // From x_T = 21 on: the series in 1/x (detail::i1_over_i0_series) against the 50-digit ratio
+  // (Hankel's two sums in cpp_bin_float_50 from its own x_T = 60, Boost below) on a geometric grid
+  // of [21, 1e9]. Bound 1 eps: eps/2 for 1 + tail, eps/16 of truncation, and the tail's rounding
+  // (a few eps of |tail| <= 1/40); measured 0.29 eps.
+  worst = 0;
+  for (double x = 21; x < 1e9; x *= 1.003) {  // 6904 points
+    const Mp50 exact = viscoroll::special::bessel_i1_over_i0(Mp50(x));
+    worst = std::max(worst, static_cast<double>(abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) /
+                                                    exact) /
+                                                std::numeric_limits<double>::epsilon()));
+  }
+  CHECK(worst <= 1);
+  CHECK(bessel_i1_over_i0_fast(std::numeric_limits<double>::infinity()) == 1);
   // float and long double: the accurate function itself.
   for (const float x : {1e-3f, 0.5f, 3.0f, 9.5f, 40.0f})
     CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
   for (const long double x : {1e-3L, 0.5L, 3.0L, 23.0L, 40.0L})
     CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
+}
+
+TEST_CASE("bessel_i1_over_i0_fast: the ratio's series in 1/x, its coefficients and length",
+          "[special]") {
+  // r_k of I1/I0 ~ sum r_k x^-k: the quotient of Hankel's sums (DLMF 10.40.1, a_k of 10.17.1),
+  // r_0 = 1, r_k = c_k(1) - sum_{j=1..k} c_j(0) r_{k-j}, c_k(nu) = (-1)^k a_k(nu), recomputed here
+  // in 50 digits: each table entry is the 50-digit value rounded to double.
+  using viscoroll::detail::kI1OverI0Series;
+  constexpr int n = static_cast<int>(std::size(kI1OverI0Series));
+  std::vector<Mp50> c0(n), c1(n), r(n);
+  c0[0] = c1[0] = 1;
+  for (int k = 1; k < n; ++k) {
+    const int odd = (2 * k - 1) * (2 * k - 1);
+    c0[k] = -c0[k - 1] * Mp50(0 - odd) / Mp50(8 * k);
+    c1[k] = -c1[k - 1] * Mp50(4 - odd) / Mp50(8 * k);
+  }
+  for (int k = 0; k < n; ++k) {
+    r[k] = c1[k];
+    for (int j = 1; j <= k; ++j) r[k] -= c0[j] * r[k - j];
+    INFO("k = " << k);
+    CHECK(static_cast<double>(r[k]) == kI1OverI0Series[k]);
+  }
+  CHECK(kI1OverI0Series[1] == -0.5);
+  CHECK(kI1OverI0Series[4] == -25.0 / 128);
+  // The tiers' lengths: at each tier's smallest x the first omitted term is below eps/16 and the
+  // terms kept fall monotonically (the asymptotic series is used before its smallest term).
+  const double eps = std::numeric_limits<double>::epsilon();
+  // The last tier starts where bessel_i1_over_i0_fast hands over to the series.
+  CHECK(std::end(viscoroll::detail::kI1OverI0Tiers)[-1].x ==
+        viscoroll::detail::bessel_asymptotic_threshold<double>());
+  for (const auto& t : viscoroll::detail::kI1OverI0Tiers) {
+    INFO("x = " << t.x << ", " << t.terms << " terms");
+    // The 25th term (k = 25) is not in the table: it is r_25 = c_25(1) - sum c_j(0) r_{25-j}.
+    Mp50 next;
+    if (t.terms < n) {
+      next = r[t.terms];
+    } else {
+      const int odd = (2 * n - 1) * (2 * n - 1);
+      const Mp50 c0n = -c0[n - 1] * Mp50(0 - odd) / Mp50(8 * n);
+      const Mp50 c1n = -c1[n - 1] * Mp50(4 - odd) / Mp50(8 * n);
+      next = c1n;
+      for (int j = 1; j < n; ++j) next -= c0[j] * r[n - j];
+      next -= c0n * r[0];
+    }
+    CHECK(static_cast<double>(abs(next) / pow(Mp50(t.x), t.terms)) < eps / 16);
+    for (int k = 2; k <= t.terms; ++k) {
+      const Mp50 term_k = k < n ? abs(r[k]) : abs(next);
+      CHECK(term_k / Mp50(t.x) <= abs(r[k - 1]));
+    }
+  }
 }

@@ -168,7 +168,7 @@ class LineResidual {
       dq[j] = there.q - here.q;
     }
     const Real right = form_ == LeadingEdgeForm::exterior
-                           ? exterior_right(nd, dq, here.q, here.a + here.b, Real(1))
+                           ? exterior_right(nd, dq, here.q, here.a + here.b)
                            : paper_right(s, y, here.a + here.b);
     point_rows(d, y, here, nd, df0, right, r34, rle);
     return true;
@@ -178,13 +178,11 @@ class LineResidual {
   /// the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
   /// (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
   /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), at nodes
-  /// held fixed in t = y/l. Only the kernels' dependence on the leading edge x0 = a + b and on l (a
-  /// few sums per point, no Bessel work) is differentiated by forward differences. Exterior form
+  /// held fixed in t = y/l; the kernels' dependence on the leading edge x0 = a + b and on l is
+  /// differentiated in the same pass as the kernels (exterior_right's KernelSlopes). Exterior form
   /// (L6) only; returns false where operator() would, or for the paper's form.
   bool jacobian(const Vector& x, Vector& r, Matrix& jac) const {
     using std::log;
-    using std::log1p;
-    using std::sqrt;
     if (form_ != LeadingEdgeForm::exterior) return false;
     const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
     r.resize(equations());
@@ -192,7 +190,6 @@ class LineResidual {
     const LineShape<Real> s = shape(x);
     const Real d = penetration(x), c1 = p_.c1, v = p_.vtau;
     const Real scale34 = c1 * p_.a_ref * p_.a_ref;
-    const Real h = sqrt(std::numeric_limits<Real>::epsilon());
     Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu);
     for (int i = 0; i < m; ++i) {
       const Real t = t_[i], y = t * s.l;
@@ -217,7 +214,8 @@ class LineResidual {
         dq[j] = dn[j].value.q - here.q;
       }
       Real ends = 0;
-      const Real right = exterior_right(nd, dq, here.q, x0, Real(1), &wq, &ends);
+      KernelSlopes slopes;
+      const Real right = exterior_right(nd, dq, here.q, x0, &wq, &ends, &slopes);
       Real r34 = 0, rle = 0;
       const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
       r[i] = r34 + v / p_.a_ref * rle;
@@ -238,12 +236,9 @@ class LineResidual {
       }
       dlhs -= w0sum * df0_i;
       dright += (ends - wqsum) * dq_i;
-      // The kernels' dependence on x0 and on l (nodes fixed in t), by forward differences.
-      const Real hx = h * x0;
-      const Real r_x0 = (exterior_right(nd, dq, here.q, x0 + hx, Real(1)) - right) / hx;
-      const Real r_l = (exterior_right(nd, dq, here.q, x0, 1 + h) - right) / log1p(h);
-      dright += r_x0 * (da_i + db_i);
-      dright[lam] += r_l;
+      // The kernels' dependence on x0 and on l (nodes fixed in t).
+      dright += slopes.x0 * (da_i + db_i);
+      dright[lam] += slopes.l;
       // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
       //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
       const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
@@ -339,18 +334,25 @@ class LineResidual {
     detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_);
   }
 
+  /// The derivatives of exterior_right in x0 and in ln l (every distance along y stretched by
+  /// lambda, nodes fixed in t), at fixed dq and q (docs/theory.md section 6).
+  struct KernelSlopes {
+    Real x0 = 0, l = 0;
+  };
+
   /// (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt, (L6), from dq_j = Q(y'_j) - Q(y) and
-  /// q = Q(y), with every distance along y scaled by `stretch` (1 for the residual; the Jacobian's
-  /// derivative in l at fixed t). Optionally the weight of each dq_j and the factor of q.
+  /// q = Q(y). Optionally the weight of each dq_j, the factor of q, and the derivatives in x0 and
+  /// ln l (the Jacobian's; in the same pass, docs/theory.md section 6).
   Real exterior_right(const PointNodes& nd, const std::vector<Real>& dq, Real q, Real x0,
-                      Real stretch, std::vector<Real>* wq = nullptr, Real* ends = nullptr) const {
+                      std::vector<Real>* wq = nullptr, Real* ends = nullptr,
+                      KernelSlopes* slopes = nullptr) const {
     using std::exp;
     using std::hypot;
     using std::log1p;
     using std::sqrt;
     const Real v = p_.vtau;
     const std::size_t nt = nd.tn.size();
-    Eigen::Array<Real, Eigen::Dynamic, 1> uk2(nt), wu(nt);
+    Eigen::Array<Real, Eigen::Dynamic, 1> uk2(nt), wu(nt), wt(nt), wtu2(nt), p2(nt);
     std::vector<Real> xk(nt), wk(nt);
     for (std::size_t k = 0; k < nt; ++k) {
       xk[k] = x0 + v * nd.tn[k];
@@ -361,29 +363,61 @@ class LineResidual {
       const Real u = xk[k] / x0;
       uk2[k] = u * u;
       wu[k] = wk[k] * u;
+      wt[k] = wk[k];
+      wtu2[k] = wk[k] * u * u;
     }
-    Real s1 = 0, s2 = 0;
+    Real s1 = 0, s2 = 0, s_x0 = 0, s_l = 0;
     for (std::size_t j = 0; j < nd.dist.size(); ++j) {
-      const Real w = nd.weight[j] * stretch;
-      const Real sigma = nd.dist[j] * stretch / x0, sigma2 = sigma * sigma;
+      const Real w = nd.weight[j];
+      const Real sigma = nd.dist[j] / x0, sigma2 = sigma * sigma;
       const Real hu = sqrt(1 + sigma2);                      // h / x0
-      const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h))
-      // One lazy Eigen expression: packed square roots and divisions, a tree-ordered sum.
-      const Real k2 = -w * (wu / ((uk2 + sigma2) * (uk2 + sigma2).sqrt())).sum() / (x0 * x0);
+      const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h)) = 1/s - 1/h
+      // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed divisions and
+      // square roots, a tree-ordered sum; the same operations with and without the slopes, so
+      // that the Jacobian's residual is operator()'s bit for bit.
+      p2 = (uk2 + sigma2).inverse();
+      const Real k2 = -w * (wu * (p2 * p2.sqrt())).sum() / (x0 * x0);
+      if (slopes != nullptr) {
+        // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
+        // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2;
+        // dk1/dx0 = w x0/h^3, dk1/dln l = -w x0^2/h^3.
+        const Eigen::Array<Real, Eigen::Dynamic, 1> p5 = p2 * p2 * p2.sqrt();
+        const Real k2_x0 = -w * (sigma2 * (wt * p5).sum() - 2 * (wtu2 * p5).sum()) / (x0 * x0 * x0);
+        const Real k2_l = k2 + 3 * w * sigma2 * (wu * p5).sum() / (x0 * x0);
+        const Real hu3 = hu * hu * hu;
+        s_x0 += (w / (x0 * x0 * hu3) - k2_x0) * dq[j];
+        s_l += (-w / (x0 * hu3) - k2_l) * dq[j];
+      }
       s1 += k1 * dq[j];
       s2 += k2 * dq[j];
       if (wq != nullptr) (*wq)[j] = k1 - k2;
     }
-    const Real d1 = nd.d1 * stretch, d2 = nd.d2 * stretch;
+    const Real d1 = nd.d1, d2 = nd.d2;
     const Real h1 = hypot(x0, d1), h2 = hypot(x0, d2);
+    // log1p(x0^2/(2 d (h + d))) = ln((h + d)/(2 d)).
     const Real ends_l =
         -(log1p(x0 * x0 / (2 * d1 * (h1 + d1))) + log1p(x0 * x0 / (2 * d2 * (h2 + d2))));
-    Real ends_2 = 0;
+    Real ends_2 = 0, ends_2_x0 = 0, ends_2_l = 0;
     for (std::size_t k = 0; k < nt; ++k) {
       const Real g1 = hypot(xk[k], d1), g2 = hypot(xk[k], d2);
-      ends_2 += wk[k] * xk[k] * (1 / (g1 * (g1 + d1)) + 1 / (g2 * (g2 + d2)));
+      const Real a1 = 1 / (g1 * (g1 + d1)), a2 = 1 / (g2 * (g2 + d2));
+      ends_2 += wk[k] * xk[k] * (a1 + a2);
+      if (slopes != nullptr) {
+        // phi = x A, A = 1/(g (g + d)), g = hypot(x, d): dphi/dx = A - x^2 (2 g + d) A^2 / g,
+        // dphi/dln l = d dphi/dd = -x d / g^3.
+        const Real x2 = xk[k] * xk[k];
+        ends_2_x0 += wk[k] * (a1 - x2 * (2 * g1 + d1) * a1 * a1 / g1 + a2 -
+                              x2 * (2 * g2 + d2) * a2 * a2 / g2);
+        ends_2_l -= wk[k] * xk[k] * (d1 / (g1 * g1 * g1) + d2 / (g2 * g2 * g2));
+      }
     }
     if (ends != nullptr) *ends = ends_l - ends_2;
+    if (slopes != nullptr) {
+      // d ln((h + d)/(2 d))/dx0 = x0/(h (h + d)); its derivative in ln l is -x0^2/(h (h + d)).
+      const Real e1 = x0 / (h1 * (h1 + d1)), e2 = x0 / (h2 * (h2 + d2));
+      slopes->x0 = s_x0 + q * (-(e1 + e2) - ends_2_x0);
+      slopes->l = s_l + q * (x0 * (e1 + e2) - ends_2_l);
+    }
     // (L6): (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt
     return (s1 + q * ends_l) - (s2 + q * ends_2);
   }

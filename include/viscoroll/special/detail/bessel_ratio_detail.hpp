@@ -60,6 +60,65 @@ Real hankel_ratio(int nu_num, int nu_den, const Real& x, bool modified_first_kin
   return 1 + (tail_num - tail_den) / (1 + tail_den);
 }
 
+/// Coefficients r_k of I_1(x)/I_0(x) ~ sum_k r_k x^-k, the quotient of Hankel's sums DLMF 10.40.1
+/// for nu = 1 and 0 (docs/special-functions.md, "I1/I0 for large x in double"): r_0 = 1 and
+/// r_k = c_k(1) - sum_{j=1..k} c_j(0) r_{k-j}, c_k(nu) = (-1)^k a_k(nu) of DLMF 10.17.1; exact
+/// rationals with power-of-two denominators (r_1 = -1/2, r_2 = r_3 = -1/8, r_4 = -25/128, ...),
+/// rounded to double. 25 terms reach eps/16 at x_T = 21 (test "the ratio's series ...").
+inline constexpr double kI1OverI0Series[] = {
+    1.0,
+    -0.5,
+    -0.125,
+    -0.125,
+    -0.1953125,
+    -0.40625,
+    -1.0478515625,
+    -3.21875,
+    -11.466461181640625,
+    -46.478515625,
+    -211.27614974975586,
+    -1064.67822265625,
+    -5892.0457146167755,
+    -35528.87744140625,
+    -231884.6359563172,
+    -1628749.4532470703,
+    -12251067.63286615,
+    -98252781.81546783,
+    -836956449.7799761,
+    -7546911569.366995,
+    -71816112232.68327,
+    -719236632073.3802,
+    -7562132599676.877,
+    -83284339829845.66,
+    -958823685326569.2,
+};
+
+/// I_1(x)/I_0(x) in double for x >= 21 (x_T of double): sum_{k<K} r_k x^-k by Horner's rule, with
+/// K the number of terms after which the next one, |r_K| x^-K, is below eps/16 at the tier's
+/// smallest x (the terms fall monotonically there: K << 2x). 25 terms at x = 21, 5 beyond 1e4;
+/// 1 at +inf. Error: eps/2 in 1 + tail, eps/16 of truncation, and the tail's own rounding times
+/// |tail| <= 1/40; measured 0.29 eps at worst over [21, 1e9] (test "bessel_i1_over_i0_fast").
+struct SeriesTier {
+  double x;   ///< smallest argument of the tier
+  int terms;  ///< the first k with |r_k| x^-k < eps/16 there, from the exact r_k
+};
+inline constexpr SeriesTier kI1OverI0Tiers[] = {{1e4, 5}, {1e3, 6}, {200, 8}, {100, 10},
+                                                {50, 13}, {30, 17}, {24, 21}, {21, 25}};
+
+inline double i1_over_i0_series(double x) {
+  int terms = 25;
+  for (const auto& t : kI1OverI0Tiers) {
+    if (x >= t.x) {
+      terms = t.terms;
+      break;
+    }
+  }
+  const double z = 1 / x;
+  double tail = kI1OverI0Series[terms - 1];
+  for (int k = terms - 2; k >= 1; --k) tail = tail * z + kI1OverI0Series[k];
+  return 1 + tail * z;  // the O(1/x) tail apart from the leading 1, as in hankel_tail
+}
+
 /// Below this argument I_2/I_0 is summed from the power series; above it 1 - 2 I_1/(x I_0) loses
 /// less than the ratio's own error (the subtraction amplifies it by I_0/I_2 - 1 = 0.76 at x = 4).
 template <class Real>
