@@ -24,7 +24,8 @@
 // (where I0(alpha) = 0, just beyond +-l when a0/V tau is large, docs/line-operators.md); in t,
 // equal panels in ln(1 + t/c), c = min(x0/V, 1), up to -ln(eps) + 8. The panels' width follows
 // from the distance of the singularities in these variables (pi/2) and the rule's order, so that
-// every integral is exact to rounding.
+// every integral is exact to rounding. Far from the point (s beyond ~2.4 (x0 + V) when V << x0),
+// K(s) is a series in 1/s^2 with the t-integral done once per point (docs/theory.md section 8).
 #pragma once
 
 #include <Eigen/Dense>
@@ -35,6 +36,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/detail/graded_panels.hpp>
+#include <viscoroll/line/detail/memory_kernel_series.hpp>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
@@ -366,18 +368,36 @@ class LineResidual {
       wt[k] = wk[k];
       wtu2[k] = wk[k] * u * u;
     }
+    // s-nodes beyond far.threshold() (~2.4 (x0 + V) when V << x0) take the series in 1/s^2
+    // instead of the t-nodes.
+    const detail::MemoryKernelSeries<Real> far(x0, v);
     Real s1 = 0, s2 = 0, s_x0 = 0, s_l = 0;
     for (std::size_t j = 0; j < nd.dist.size(); ++j) {
       const Real w = nd.weight[j];
       const Real sigma = nd.dist[j] / x0, sigma2 = sigma * sigma;
       const Real hu = sqrt(1 + sigma2);                      // h / x0
       const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h)) = 1/s - 1/h
-      // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed divisions and
-      // square roots, a tree-ordered sum; the same operations with and without the slopes, so
-      // that the Jacobian's residual is operator()'s bit for bit.
-      p2 = (uk2 + sigma2).inverse();
-      const Real k2 = -w * (wu * (p2 * p2.sqrt())).sum() / (x0 * x0);
-      if (slopes != nullptr) {
+      Real k2;
+      if (nd.dist[j] >= far.threshold()) {
+        // Far from the point: the series in 1/s^2 (docs/theory.md section 8), within eps/16.
+        if (slopes == nullptr) {
+          k2 = -w * far.value(nd.dist[j]);
+        } else {
+          Real kf = 0, kf_x0 = 0, kf_s = 0;
+          far.evaluate(nd.dist[j], kf, kf_x0, kf_s);
+          k2 = -w * kf;
+          const Real hu3 = hu * hu * hu;
+          s_x0 += (w / (x0 * x0 * hu3) + w * kf_x0) * dq[j];
+          s_l += (-w / (x0 * hu3) - (k2 - w * kf_s)) * dq[j];
+        }
+      } else {
+        // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed divisions and
+        // square roots, a tree-ordered sum; the same operations with and without the slopes, so
+        // that the Jacobian's residual is operator()'s bit for bit.
+        p2 = (uk2 + sigma2).inverse();
+        k2 = -w * (wu * (p2 * p2.sqrt())).sum() / (x0 * x0);
+      }
+      if (slopes != nullptr && nd.dist[j] < far.threshold()) {
         // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
         // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2;
         // dk1/dx0 = w x0/h^3, dk1/dln l = -w x0^2/h^3.
