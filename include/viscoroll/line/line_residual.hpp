@@ -354,8 +354,9 @@ class LineResidual {
     using std::sqrt;
     const Real v = p_.vtau;
     const std::size_t nt = nd.tn.size();
-    Eigen::Array<Real, Eigen::Dynamic, 1> uk2(nt), wu(nt), wt(nt), wtu2(nt), p2(nt);
-    std::vector<Real> xk(nt), wk(nt);
+    // wk: the t-weights W_k with e^-t and V; wtu2 (W u^2) only for the slopes.
+    Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(nt);
+    std::vector<Real> xk(nt);
     for (std::size_t k = 0; k < nt; ++k) {
       xk[k] = x0 + v * nd.tn[k];
       wk[k] = v * nd.tw[k] * exp(-nd.tn[k]);
@@ -365,8 +366,7 @@ class LineResidual {
       const Real u = xk[k] / x0;
       uk2[k] = u * u;
       wu[k] = wk[k] * u;
-      wt[k] = wk[k];
-      wtu2[k] = wk[k] * u * u;
+      if (slopes != nullptr) wtu2[k] = wk[k] * u * u;
     }
     // s-nodes beyond far.threshold() (~2.4 (x0 + V) when V << x0) take the series in 1/s^2
     // instead of the t-nodes.
@@ -377,7 +377,8 @@ class LineResidual {
       const Real sigma = nd.dist[j] / x0, sigma2 = sigma * sigma;
       const Real hu = sqrt(1 + sigma2);                      // h / x0
       const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h)) = 1/s - 1/h
-      Real k2;
+      // k2 and, for the slopes, dk2/dx0 and dk2/dln l.
+      Real k2, k2_x0 = 0, k2_l = 0;
       if (nd.dist[j] >= far.threshold()) {
         // Far from the point: the series in 1/s^2 (docs/theory.md section 8), within eps/16.
         if (slopes == nullptr) {
@@ -386,9 +387,8 @@ class LineResidual {
           Real kf = 0, kf_x0 = 0, kf_s = 0;
           far.evaluate(nd.dist[j], kf, kf_x0, kf_s);
           k2 = -w * kf;
-          const Real hu3 = hu * hu * hu;
-          s_x0 += (w / (x0 * x0 * hu3) + w * kf_x0) * dq[j];
-          s_l += (-w / (x0 * hu3) - (k2 - w * kf_s)) * dq[j];
+          k2_x0 = -w * kf_x0;
+          k2_l = k2 - w * kf_s;
         }
       } else {
         // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed divisions and
@@ -396,14 +396,16 @@ class LineResidual {
         // that the Jacobian's residual is operator()'s bit for bit.
         p2 = (uk2 + sigma2).inverse();
         k2 = -w * (wu * (p2 * p2.sqrt())).sum() / (x0 * x0);
+        if (slopes != nullptr) {
+          // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
+          // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2.
+          const Eigen::Array<Real, Eigen::Dynamic, 1> p5 = p2 * p2 * p2.sqrt();
+          k2_x0 = -w * (sigma2 * (wk * p5).sum() - 2 * (wtu2 * p5).sum()) / (x0 * x0 * x0);
+          k2_l = k2 + 3 * w * sigma2 * (wu * p5).sum() / (x0 * x0);
+        }
       }
-      if (slopes != nullptr && nd.dist[j] < far.threshold()) {
-        // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
-        // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2;
+      if (slopes != nullptr) {
         // dk1/dx0 = w x0/h^3, dk1/dln l = -w x0^2/h^3.
-        const Eigen::Array<Real, Eigen::Dynamic, 1> p5 = p2 * p2 * p2.sqrt();
-        const Real k2_x0 = -w * (sigma2 * (wt * p5).sum() - 2 * (wtu2 * p5).sum()) / (x0 * x0 * x0);
-        const Real k2_l = k2 + 3 * w * sigma2 * (wu * p5).sum() / (x0 * x0);
         const Real hu3 = hu * hu * hu;
         s_x0 += (w / (x0 * x0 * hu3) - k2_x0) * dq[j];
         s_l += (-w / (x0 * hu3) - k2_l) * dq[j];

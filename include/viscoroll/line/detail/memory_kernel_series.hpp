@@ -35,7 +35,6 @@ class MemoryKernelSeries {
 
   MemoryKernelSeries(Real x0, Real v) : v_(v), r_(x0 + v) {
     using std::abs;
-    using std::max;
     using std::pow;
     using std::sqrt;
     const Real alpha = x0 / r_, beta = v / r_;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <viscoroll/core/validate.hpp>
@@ -93,11 +94,7 @@ inline constexpr double kI1OverI0Series[] = {
     -958823685326569.2,
 };
 
-/// I_1(x)/I_0(x) in double for x >= 21 (x_T of double): sum_{k<K} r_k x^-k by Horner's rule, with
-/// K the number of terms after which the next one, |r_K| x^-K, is below eps/16 at the tier's
-/// smallest x (the terms fall monotonically there: K << 2x). 25 terms at x = 21, 5 beyond 1e4;
-/// 1 at +inf. Error: eps/2 in 1 + tail, eps/16 of truncation, and the tail's own rounding times
-/// |tail| <= 1/40; measured 0.29 eps at worst over [21, 1e9] (test "bessel_i1_over_i0_fast").
+/// A tier of i1_over_i0_series: the arguments from `x` on, and the terms it takes there.
 struct SeriesTier {
   double x;   ///< smallest argument of the tier
   int terms;  ///< the first k with |r_k| x^-k < eps/16 there, from the exact r_k
@@ -105,8 +102,13 @@ struct SeriesTier {
 inline constexpr SeriesTier kI1OverI0Tiers[] = {{1e4, 5}, {1e3, 6}, {200, 8}, {100, 10},
                                                 {50, 13}, {30, 17}, {24, 21}, {21, 25}};
 
+/// I_1(x)/I_0(x) in double for x >= 21 (x_T of double): sum_{k<K} r_k x^-k by Horner's rule, with
+/// K the number of terms after which the next one, |r_K| x^-K, is below eps/16 at the tier's
+/// smallest x (the terms fall monotonically there: K << 2x). 25 terms at x = 21, 5 beyond 1e4;
+/// 1 at +inf. Error: eps/2 in 1 + tail, eps/16 of truncation, and the tail's own rounding times
+/// |tail| <= 1/40; measured 0.29 eps at worst over [21, 1e9] (test "bessel_i1_over_i0_fast").
 inline double i1_over_i0_series(double x) {
-  int terms = 25;
+  int terms = std::end(kI1OverI0Tiers)[-1].terms;  // x_T's tier
   for (const auto& t : kI1OverI0Tiers) {
     if (x >= t.x) {
       terms = t.terms;
