@@ -8,7 +8,8 @@
 // failure message).
 //
 // Invariants of a converged solution:
-//   - every reported number finite; the residual within what `converged` promises (64 sqrt(eps));
+//   - every reported number finite; the residual within what a root promises (64 sqrt(eps)), or
+//     else the reason and a warning say it is a least-squares minimum (no root);
 //   - l > 0 and a(y) > 0 for |y| < l (the trailing edge b - a lies behind the leading edge b + a);
 //   - the total load, Eq. (47) with (52): int F0 dy = (1 + f) c P, F0 integrated independently of
 //     the solver (Gauss-Legendre in theta, y = l sin theta, which absorbs the square-root ends);
@@ -59,7 +60,7 @@ bool names_one_of(const std::string& what, const std::vector<std::string>& bad) 
 }
 
 struct Tally {
-  int solved = 0, not_converged = 0, rejected = 0, closed_form = 0, warned = 0;
+  int solved = 0, not_converged = 0, rejected = 0, closed_form = 0, warned = 0, least_squares = 0;
   double worst_seconds = 0, worst_load = 0, worst_negative_p = 0;
   std::string failures;  ///< not converged within the default iteration limit: trial and reason
 };
@@ -174,7 +175,16 @@ void run_line_cases(int count, std::uint64_t seed, Tally& tally) {
       REQUIRE(finite(s.residual));
       REQUIRE(finite(s.a_long_term));
       REQUIRE(finite(s.l_long_term));
-      CHECK(s.residual <= 64 * std::sqrt(eps));
+      if (s.root) {
+        CHECK(s.residual <= 64 * std::sqrt(eps));
+      } else {
+        // A least-squares minimum where the equations have no root: said in reason and warning.
+        ++tally.least_squares;
+        CHECK(s.reason.starts_with("least-squares minimum"));
+        CHECK(std::any_of(s.warnings.begin(), s.warnings.end(), [](const std::string& w) {
+          return w.find("no root") != std::string::npos;
+        }));
+      }
       CHECK(s.chi >= 0);
       // l > 0; a(y) > 0 (trailing edge behind leading edge) and b(y) finite inside.
       REQUIRE(s.l() > 0);
@@ -236,7 +246,8 @@ void run_line_cases(int count, std::uint64_t seed, Tally& tally) {
 
 void report(const Tally& t, int count) {
   WARN("line property: " << count << " scenes: " << t.solved << " converged (" << t.closed_form
-                         << " closed forms, " << t.warned << " with the l/a(0) < 3 warning), "
+                         << " closed forms, " << t.least_squares
+                         << " least-squares minima, " << t.warned << " with the l/a(0) < 3 warning), "
                          << t.not_converged << " reported not converged, " << t.rejected
                          << " rejected; slowest solve " << t.worst_seconds
                          << " s; worst relative load error " << t.worst_load

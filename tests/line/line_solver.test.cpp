@@ -556,13 +556,27 @@ TEST_CASE("line solver: the converged flag is honest", "[line]") {
   Eigen::VectorXd r;
   REQUIRE(res(res.pack(full.shape, full.d), r));
   CHECK(r.cwiseAbs().maxCoeff() <= 64 * eps<Real>());
+  CHECK(full.root);
+  CHECK(full.warnings.empty());
   // Where the discrete equations have no root (docs/line-solver.md: V tau = 10 a0, N >= 8, a
-  // least-squares minimum at abs(r) ~ 7e-6), the result says so.
+  // least-squares minimum at abs(r) ~ 7e-6), the result says so: a least-squares minimum, not a
+  // root, with a warning; without the minimisation, not converged.
   const auto none = Solver<Real>(sc.material(), LineOptions{.terms = 16}).solve(sc.scene(10.0));
   INFO("V tau = 10 a0, N = 16: " << none.reason << ", residual " << none.residual);
-  CHECK_FALSE(none.converged);
-  CHECK((none.reason.starts_with("stalled") || none.reason.starts_with("no descent")));
+  CHECK(none.converged);
+  CHECK_FALSE(none.root);
+  CHECK(none.reason.starts_with("least-squares minimum"));
   CHECK(none.residual > 64 * std::sqrt(eps<Real>()));
+  REQUIRE(none.warnings.size() == 1);
+  CHECK(none.warnings[0].find("no root") != std::string::npos);
+  const auto plain =
+      Solver<Real>(sc.material(), LineOptions{.terms = 16, .least_squares = false})
+          .solve(sc.scene(10.0));
+  INFO("the same without least squares: " << plain.reason << ", residual " << plain.residual);
+  CHECK_FALSE(plain.converged);
+  CHECK_FALSE(plain.root);
+  CHECK((plain.reason.starts_with("stalled") || plain.reason.starts_with("no descent")));
+  CHECK(plain.residual > 64 * std::sqrt(eps<Real>()));
   // Continuation from a solution at another speed lands on the same discrete solution.
   const auto slower = solver.solve(sc.scene(0.3));
   const auto cont = solver.solve(sc.scene(1.0), &slower);

@@ -74,6 +74,11 @@ struct LineOptions {
   /// How the Jacobian is formed: semi-analytic (LineResidual::jacobian, default; the (L6) form
   /// only, the paper's (44) always uses differences) or by forward differences.
   LineJacobian jacobian = LineJacobian::analytic;
+  /// Where Levenberg-Marquardt stops at a least-squares minimum with no root of the equations
+  /// near it, minimise |r|^2 there by Newton's method with its second-order term (the paper's
+  /// least-squares solution, Section 7; docs/line-solver.md, "Least-squares minima"). Needs the
+  /// semi-analytic Jacobian and the (L6) form; otherwise such a stop is reported not converged.
+  bool least_squares = true;
 
   void validate() const {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
@@ -93,6 +98,10 @@ struct LineSolution {
   Real d_long_term;       ///< its penetration
   Real chi;               ///< rolling-friction coefficient, Eq. (54) in the form of section 4
   bool converged;         ///< the iteration met its tolerance (always true for a closed form)
+  /// The residual vanishes (max |r| <= 64 sqrt(eps)): a root of the line equations. False with
+  /// converged at a certified least-squares minimum where the equations have no root (the
+  /// residual is then reported, and a warning says so).
+  bool root;
   std::string reason;     ///< why it stopped
   int iterations;         ///< Levenberg-Marquardt iterations (0 for a closed form)
   Real residual;          ///< max |r| of the scaled equations at the returned solution
@@ -220,8 +229,8 @@ class LineSolver {
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol{shape, s.d,     slow.a0, slow.l,   slow.d,  Real(0), true, reason,
-                 0,     Real(0), {},      scene.c1, Real(0), f,       c};
+    Solution sol{shape, s.d,     slow.a0,  slow.l,  slow.d, Real(0), true, true,
+                 reason, 0,     Real(0), {},       scene.c1, Real(0), f,     c};
     add_warnings(sol);
     return sol;
   }
@@ -240,6 +249,9 @@ class LineSolver {
   struct Outcome {
     bool converged = false;
     bool undefined = false;  ///< the Jacobian could not be evaluated (left the equations' domain)
+    bool minimum = false;    ///< stopped at a least-squares minimum with no root near (or no
+                             ///< descent step): where `minimise` takes over
+    bool root_near = false;  ///< `minimise` reached a residual below tolerance
     std::string reason = "iteration limit";
     int iterations = 0;
   };
@@ -282,14 +294,27 @@ class LineSolver {
           return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain",
                          total.iterations);
       }
-      const Outcome out = iterate(res, x, r);
+      Outcome out = iterate(res, x, r);
       total.iterations += out.iterations;
+      const bool last = k + 1 == stages.size();
+      if (last && out.minimum && options_.least_squares &&
+          options_.jacobian == LineJacobian::analytic &&
+          options_.leading_edge == LeadingEdgeForm::exterior) {
+        // The paper's least-squares solution where the equations have no root; if Newton's
+        // method on |r|^2 finds a root after all, Levenberg-Marquardt certifies it.
+        out = minimise(res, x, r);
+        total.iterations += out.iterations;
+        if (out.root_near) {
+          out = iterate(res, x, r);
+          total.iterations += out.iterations;
+        }
+      }
       if (out.undefined)
         return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", total.iterations);
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
-      if (k + 1 == stages.size())
+      if (last)
         return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason,
                     total.iterations);
     }
@@ -384,6 +409,7 @@ class LineSolver {
       }
       if (!accepted) {
         out.reason = "no descent step (Levenberg-Marquardt damping exhausted)";
+        out.minimum = true;
         return out;
       }
       // Broyden's update with the accepted step s and the change of residual rt - r.
@@ -438,6 +464,7 @@ class LineSolver {
         out.reason =
             "stalled: |r|^2 fell by less than 5% over 20 steps (a least-squares minimum, no root "
             "near)";
+        out.minimum = true;
         ++out.iterations;
         return out;
       }
@@ -455,6 +482,7 @@ class LineSolver {
           out.reason =
               "stalled at a least-squares minimum, no root near (|r|^2 falls by < sqrt(eps) per "
               "step)";
+          out.minimum = true;
           ++out.iterations;
           return out;
         }
@@ -465,9 +493,145 @@ class LineSolver {
     return out;
   }
 
+  /// Newton's method on phi = |r|^2 / 2 from where Levenberg-Marquardt stopped at a least-squares
+  /// minimum (docs/line-solver.md, "Least-squares minima"; derivation in docs/theory.md section 9).
+  /// There the Jacobian J is nearly singular and r lies along its smallest left singular vector,
+  /// so the Gauss-Newton model J^T J misses the curvature of phi that matters, the second-order
+  /// term S = sum_i r_i grad^2 r_i (M2). S is taken by central differences of the gradient
+  /// g = J^T r (semi-analytic J) along the right singular directions of J in which it is not small
+  /// against J^T J: sigma^2 <= 1e3 |S v_min| (M3). With D = H V (the differences) and
+  /// E = D - J^T J V, S ~ E V^T + V E^T - V V^T E V^T, exact on span V. S is kept from step to
+  /// step (it varies slowly) and taken afresh when a step fails or before the stop is trusted.
+  /// Steps solve (J^T J + S + mu I) s = -g, mu = 0 when that is positive definite, accepted when
+  /// phi falls. Converged (M4): the Hessian with a fresh S positive definite and Newton's
+  /// predicted decrease g^T H^-1 g / 2 below the rounding of phi, 16 eps sqrt(m) |r| (each scaled
+  /// equation sums terms of order one): a strict local minimum. A residual below the root
+  /// tolerance on the way returns `root_near`.
+  Outcome minimise(const LineResidual<Real, Quadrature>& res, Vector& x, Vector& r) const {
+    using std::abs;
+    using std::cbrt;
+    using std::sqrt;
+    const int n = res.unknowns(), m = res.equations();
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real residual_tol = 64 * sqrt(eps);
+    Outcome out;
+    out.reason = "iteration limit (least-squares minimisation)";
+    Matrix jac(m, n), jac_h(m, n), s_part(n, n);
+    Vector r_h(m), rt(m), g_plus(n), g_minus(n);
+    bool fresh = false;  // s_part was taken at the current x
+    Real mu = 0;
+    const auto undefined = [&out]() {
+      out.undefined = true;
+      out.reason = "Jacobian undefined";
+      return out;
+    };
+    // S at x from the gradient's central differences along the weak directions of J (M3).
+    const auto second_order = [&](const Matrix& jtj) {
+      const Eigen::SelfAdjointEigenSolver<Matrix> gauss(jtj);  // eigenvalues ascending
+      const Real h = cbrt(eps) * (1 + x.cwiseAbs().maxCoeff());
+      const auto hessian_times = [&](const Vector& v, Vector& hv) {
+        if (!res.jacobian(x + h * v, r_h, jac_h)) return false;
+        g_plus = jac_h.transpose() * r_h;
+        if (!res.jacobian(x - h * v, r_h, jac_h)) return false;
+        g_minus = jac_h.transpose() * r_h;
+        hv = (g_plus - g_minus) / (2 * h);
+        return true;
+      };
+      Vector hv(n);
+      if (!hessian_times(gauss.eigenvectors().col(0), hv)) return false;
+      const Real s_scale = (hv - jtj * gauss.eigenvectors().col(0)).norm();
+      int k = 1;
+      while (k < n && gauss.eigenvalues()[k] <= 1000 * s_scale) ++k;
+      const Matrix v = gauss.eigenvectors().leftCols(k);
+      Matrix e(n, k);
+      e.col(0) = hv;
+      for (int j = 1; j < k; ++j) {
+        if (!hessian_times(v.col(j), hv)) return false;
+        e.col(j) = hv;
+      }
+      e -= jtj * v;
+      s_part = e * v.transpose() + v * e.transpose() - v * (v.transpose() * e) * v.transpose();
+      s_part = (s_part + s_part.transpose()).eval() / 2;
+      fresh = true;
+      return true;
+    };
+    for (; out.iterations < options_.max_iterations; ++out.iterations) {
+      if (!res.jacobian(x, r, jac)) return undefined();
+      if (r.cwiseAbs().maxCoeff() <= residual_tol) {
+        out.root_near = true;
+        out.reason = "root near";
+        return out;
+      }
+      const Real phi = r.squaredNorm() / 2;
+      const Real floor = 16 * eps * sqrt(Real(m)) * r.norm();  // rounding of phi
+      const Vector g = jac.transpose() * r;
+      const Matrix jtj = jac.transpose() * jac;
+      if (!fresh && out.iterations == 0 && !second_order(jtj)) return undefined();
+      bool accepted = false;
+      for (;;) {
+        const Eigen::SelfAdjointEigenSolver<Matrix> newton(jtj + s_part);
+        const Vector& lambda = newton.eigenvalues();
+        const Vector qg = newton.eigenvectors().transpose() * g;
+        const Real lmin = lambda[0], lmax = lambda[n - 1];
+        const Real predicted =
+            lmin > 0 ? Real((qg.array().square() / lambda.array()).sum() / 2) : Real(0);
+        if (lmin > 0 && predicted <= floor) {
+          if (!fresh) {
+            if (!second_order(jtj)) return undefined();
+            continue;  // the stop is trusted with S taken here only
+          }
+          // Below the rounding of phi: converged, after one more Newton step where the model
+          // still promises more than eps phi and the step delivers it (kept if it lowers phi).
+          bool minimum = predicted <= 16 * eps * phi;
+          if (!minimum) {
+            const Vector step = -(newton.eigenvectors() * (qg.array() / lambda.array()).matrix());
+            const bool lower = res(x + step, rt) && rt.squaredNorm() / 2 < phi;
+            if (lower) x += step;
+            minimum = !lower || phi - rt.squaredNorm() / 2 <= floor;
+            accepted = lower;
+          }
+          if (minimum) {
+            if (accepted && !res(x, r)) return undefined();
+            out.converged = true;
+            out.reason = "least-squares minimum (no root of the line equations here)";
+            ++out.iterations;
+            return out;
+          }
+          break;
+        }
+        mu = lmin > 0 ? Real(0) : std::max(mu, 2 * abs(lmin));
+        for (int attempt = 0; attempt < 40 && !accepted; ++attempt) {
+          const Vector step =
+              -(newton.eigenvectors() * (qg.array() / (lambda.array() + mu)).matrix());
+          if (res(x + step, rt) && rt.squaredNorm() / 2 < phi) {
+            x += step;
+            accepted = true;
+          } else {
+            // From the smallest shift that tells: the curvature that matters is far below lmax.
+            mu = std::max(8 * mu, 2 * std::max(-lmin, Real(0)) + eps * lmax);
+          }
+        }
+        if (accepted || fresh) break;
+        if (!second_order(jtj)) return undefined();  // a stale S: take it here and try again
+        mu = 0;
+      }
+      if (!accepted) {
+        out.reason = "no descent step (least-squares minimisation)";
+        return out;
+      }
+      fresh = false;
+      mu /= 8;
+    }
+    res(x, r);
+    return out;
+  }
+
   Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
                 Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                 const Vector& r, bool converged, std::string reason, int iterations) const {
+    using std::sqrt;
+    const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
+    const bool root = converged && rmax <= 64 * sqrt(std::numeric_limits<Real>::epsilon());
     Solution sol{res.shape(x),
                  res.penetration(x),
                  slow.a0,
@@ -475,9 +639,10 @@ class LineSolver {
                  slow.d,
                  Real(0),
                  converged,
+                 root,
                  std::move(reason),
                  iterations,
-                 r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0),
+                 rmax,
                  {},
                  scene.c1,
                  vtau,
@@ -485,6 +650,12 @@ class LineSolver {
                  c};
     sol.chi = rolling_friction(sol);
     add_warnings(sol);
+    if (converged && !root)
+      sol.warnings.push_back(
+          "the line equations have no root here: a least-squares minimum with max |r| = " +
+          std::to_string(double(rmax)) +
+          " (the line theory does not close at this speed and discretisation; "
+          "docs/line-solver.md, \"Least-squares minima\")");
     return sol;
   }
 
