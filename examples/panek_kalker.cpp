@@ -5,12 +5,15 @@
 // 1e-3 ... 1e3, solved in increasing order, each seeded with the previous converged solution.
 // Writes
 //   <dir>/panek_kalker_sweep.csv     Fig. 3 and 4: vtau (= V tau/a0), a0_ratio = a(0)/a0,
-//                                    b0_ratio = b(0)/a0, l_ratio = l/l0, d_over_c1a0sq = d/(C1 a0^2),
-//                                    chi, converged, iterations, seconds (wall time of that solve),
-//                                    residual (max |r| of the scaled equations; empty if undefined)
+//                                    b0_ratio = b(0)/a0, l_ratio = l/l0, d_over_c1a0sq = d/(C1
+//                                    a0^2), chi, converged, iterations, seconds (wall time of that
+//                                    solve), residual (max |r| of the scaled equations; empty if
+//                                    undefined), root (1: a root of the line equations; 0 with
+//                                    converged = 1: their least-squares minimum, where they have no
+//                                    root)
 //   <dir>/panek_kalker_zones.csv     Fig. 5: the contact outline x = b(y) +- a(y), y in [-l, l]
-//                                    (units of a0), for V tau/a0 in {0.01, 0.1, 0.3, 1, 3, 10, 100}:
-//                                    vtau, y, x_lead = b + a, x_trail = b - a
+//                                    (units of a0), for V tau/a0 in {0.01, 0.1, 0.3, 1, 3, 10,
+//                                    100}: vtau, y, x_lead = b + a, x_trail = b - a
 //   <dir>/panek_kalker_pressure.csv  Fig. 6: the pressure along y = 0 for the same speeds, rescaled
 //                                    as we read the paper's "rescaled for comparison": the contact
 //                                    mapped onto xi = (x - b(0))/a(0) in [-1, 1] (trailing edge
@@ -99,7 +102,8 @@ int main(int argc, char** argv) {
 
   // Fig. 3 and 4: the sweep.
   std::ofstream sweep(args.dir / "panek_kalker_sweep.csv");
-  sweep << "vtau,a0_ratio,b0_ratio,l_ratio,d_over_c1a0sq,chi,converged,iterations,seconds,residual\n";
+  sweep << "vtau,a0_ratio,b0_ratio,l_ratio,d_over_c1a0sq,chi,converged,iterations,seconds,residual,"
+           "root\n";
   sweep.precision(12);
   std::vector<double> speeds;
   std::vector<Solution> solutions;
@@ -120,10 +124,11 @@ int main(int argc, char** argv) {
     sweep << vtau << ',' << s.a(0.0) / a0 << ',' << s.b(0.0) / a0 << ',' << s.l() / l0 << ',' << d_scaled << ','
           << s.chi << ',' << (s.converged ? 1 : 0) << ',' << s.iterations << ',' << seconds << ',';
     if (std::isfinite(s.residual)) sweep << s.residual;
-    sweep << '\n';
-    std::printf("%12.5g %10.6f %10.6f %10.6f %12.8f %11.8f %5s %4d %8.3f %9.2g%s%s\n", vtau, s.a(0.0) / a0,
-                s.b(0.0) / a0, s.l() / l0, d_scaled, s.chi, s.converged ? "yes" : "NO", s.iterations, seconds,
-                s.residual, s.converged ? "" : "  ", s.converged ? "" : s.reason.c_str());
+    sweep << ',' << (s.root ? 1 : 0) << '\n';
+    std::printf("%12.5g %10.6f %10.6f %10.6f %12.8f %11.8f %5s %4d %8.3f %9.2g%s%s\n", vtau,
+                s.a(0.0) / a0, s.b(0.0) / a0, s.l() / l0, d_scaled, s.chi,
+                s.converged ? "yes" : "NO", s.iterations, seconds, s.residual,
+                s.root ? "" : "  ", s.root ? "" : s.reason.c_str());
     if (!s.converged) ++failures;
     speeds.push_back(vtau);
     solutions.push_back(s);

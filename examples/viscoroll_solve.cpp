@@ -143,9 +143,9 @@ int run_line(const SolveOptions& o) {
               << ",\"chi\":" << json_number(s.chi) << ",\"pmax\":" << json_number(peak.pressure)
               << ",\"pmax_x\":" << json_number(peak.x) << ",\"seconds\":" << number(seconds)
               << ",\"converged\":" << (s.converged ? "true" : "false")
-              << ",\"iterations\":" << s.iterations << ",\"residual\":" << json_number(s.residual)
-              << ",\"terms\":" << options.terms << ",\"reason\":" << json_string(s.reason)
-              << ",\"warnings\":" << warnings << "}\n";
+              << ",\"root\":" << (s.root ? "true" : "false") << ",\"iterations\":" << s.iterations
+              << ",\"residual\":" << json_number(s.residual) << ",\"terms\":" << options.terms
+              << ",\"reason\":" << json_string(s.reason) << ",\"warnings\":" << warnings << "}\n";
     for (const auto& w : s.warnings)
       std::cerr << "viscoroll-solve: warning: line solution for tau = " << number(o.tau[i]) << ": "
                 << w << "\n";

@@ -2,7 +2,8 @@
 # f = 9, nu = 0.5, a 5:1 static ellipse, lengths in units of the static long-term a0).
 # usage: gnuplot -e "dir='out/panek_kalker'; outdir='docs/figures'" scripts/plot_panek_kalker.gp
 # Points where the line solver did not converge (converged = 0 in the sweep) are drawn as open
-# circles on top of the curves.
+# circles on top of the curves, and least-squares minima where the line equations have no root
+# (converged = 1, root = 0, column 11) as small open squares.
 if (!exists("dir")) dir = 'out/panek_kalker'
 if (!exists("outdir")) outdir = 'docs/figures'
 set datafile separator ','
@@ -34,7 +35,10 @@ plot sweep every ::1 using 1:2 with lines lw 2 lc 1 title 'a(0)/a_0', \
      glassy_width with lines dt 2 lw 2 lc rgb 'black' title sprintf('glassy limit (1+f)^{-1/3} = %.4f', glassy_width), \
      '' every ::1 using ($7 == 0 ? $1 : 1/0):2 with points pt 6 ps 1.2 lc rgb 'red' title 'not converged', \
      '' every ::1 using ($7 == 0 ? $1 : 1/0):3 with points pt 6 ps 1.2 lc rgb 'red' notitle, \
-     '' every ::1 using ($7 == 0 ? $1 : 1/0):4 with points pt 6 ps 1.2 lc rgb 'red' notitle
+     '' every ::1 using ($7 == 0 ? $1 : 1/0):4 with points pt 6 ps 1.2 lc rgb 'red' notitle, \
+     '' every ::1 using ($7 == 1 && $11 == 0 ? $1 : 1/0):2 with points pt 4 ps 0.7 lc rgb '#d95f02' title 'least-squares minimum (no root)', \
+     '' every ::1 using ($7 == 1 && $11 == 0 ? $1 : 1/0):3 with points pt 4 ps 0.7 lc rgb '#d95f02' notitle, \
+     '' every ::1 using ($7 == 1 && $11 == 0 ? $1 : 1/0):4 with points pt 4 ps 0.7 lc rgb '#d95f02' notitle
 
 set output outdir.'/panek_kalker_fig4.png'
 set yrange [0:2.1]
@@ -44,7 +48,9 @@ plot sweep every ::1 using 1:6 with lines lw 2 lc 1 title 'chi (rolling friction
      '' every ::1 using 1:5 with lines lw 2 lc 2 title 'd/(C_1 a_0^2)', \
      glassy_depth with lines dt 2 lw 2 lc rgb 'black' title sprintf('glassy limit of d/(C_1 a_0^2) = %.4f', glassy_depth), \
      '' every ::1 using ($7 == 0 ? $1 : 1/0):6 with points pt 6 ps 1.2 lc rgb 'red' title 'not converged', \
-     '' every ::1 using ($7 == 0 ? $1 : 1/0):5 with points pt 6 ps 1.2 lc rgb 'red' notitle
+     '' every ::1 using ($7 == 0 ? $1 : 1/0):5 with points pt 6 ps 1.2 lc rgb 'red' notitle, \
+     '' every ::1 using ($7 == 1 && $11 == 0 ? $1 : 1/0):6 with points pt 4 ps 0.7 lc rgb '#d95f02' title 'least-squares minimum (no root)', \
+     '' every ::1 using ($7 == 1 && $11 == 0 ? $1 : 1/0):5 with points pt 4 ps 0.7 lc rgb '#d95f02' notitle
 
 set output outdir.'/panek_kalker_fig5.png'
 unset logscale x

@@ -36,8 +36,7 @@ struct PaperScene {
 
 }  // namespace
 
-TEST_CASE("line least squares: a strict local minimum where the equations have no root",
-          "[line]") {
+TEST_CASE("line least squares: a strict local minimum where the equations have no root", "[line]") {
   const double eps = std::numeric_limits<double>::epsilon();
   const PaperScene paper;
   const LineOptions options{.terms = 16, .basis = viscoroll::LineBasis::s};
@@ -75,8 +74,7 @@ TEST_CASE("line least squares: a strict local minimum where the equations have n
   hess = (hess + hess.transpose()).eval() / 2;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(hess);
   const double lmin = eig.eigenvalues()[0], lmax = eig.eigenvalues()[n - 1];
-  INFO("phi " << phi << ", |g| " << g.norm() << ", Hessian eigenvalues " << lmin << " .. "
-              << lmax);
+  INFO("phi " << phi << ", |g| " << g.norm() << ", Hessian eigenvalues " << lmin << " .. " << lmax);
   CHECK(lmin > 1e-3 * std::sqrt(eps) * lmax);  // positive definite, not merely to rounding
   // Newton's predicted decrease g^T H^-1 g / 2 <= 16 eps phi is the solver's stop (with its own
   // H, which equals this one to the difference errors above and the neglected 1e-3 of S):
@@ -98,8 +96,8 @@ TEST_CASE("line least squares: a strict local minimum where the equations have n
   double along = 0;
   const Eigen::VectorXd sigma = singular(jac, r, along);
   const double sigma_bound = std::sqrt(16 * eps * lmax) / along;
-  INFO("sigma_n " << sigma[n - 1] << " (bound " << sigma_bound << "), sigma_{n-1} "
-                  << sigma[n - 2] << ", u_n . r / |r| " << along);
+  INFO("sigma_n " << sigma[n - 1] << " (bound " << sigma_bound << "), sigma_{n-1} " << sigma[n - 2]
+                  << ", u_n . r / |r| " << along);
   CHECK(sigma[n - 1] <= sigma_bound);
   CHECK(1 - along <= 16 * eps * lmax / (sigma[n - 2] * sigma[n - 2]));
 

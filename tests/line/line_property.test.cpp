@@ -246,11 +246,10 @@ void run_line_cases(int count, std::uint64_t seed, Tally& tally) {
 
 void report(const Tally& t, int count) {
   WARN("line property: " << count << " scenes: " << t.solved << " converged (" << t.closed_form
-                         << " closed forms, " << t.least_squares
-                         << " least-squares minima, " << t.warned << " with the l/a(0) < 3 warning), "
-                         << t.not_converged << " reported not converged, " << t.rejected
-                         << " rejected; slowest solve " << t.worst_seconds
-                         << " s; worst relative load error " << t.worst_load
+                         << " closed forms, " << t.least_squares << " least-squares minima, "
+                         << t.warned << " with the l/a(0) < 3 warning), " << t.not_converged
+                         << " reported not converged, " << t.rejected << " rejected; slowest solve "
+                         << t.worst_seconds << " s; worst relative load error " << t.worst_load
                          << "; most negative p/mean " << -t.worst_negative_p << t.failures);
 }
 

@@ -569,9 +569,8 @@ TEST_CASE("line solver: the converged flag is honest", "[line]") {
   CHECK(none.residual > 64 * std::sqrt(eps<Real>()));
   REQUIRE(none.warnings.size() == 1);
   CHECK(none.warnings[0].find("no root") != std::string::npos);
-  const auto plain =
-      Solver<Real>(sc.material(), LineOptions{.terms = 16, .least_squares = false})
-          .solve(sc.scene(10.0));
+  const auto plain = Solver<Real>(sc.material(), LineOptions{.terms = 16, .least_squares = false})
+                         .solve(sc.scene(10.0));
   INFO("the same without least squares: " << plain.reason << ", residual " << plain.residual);
   CHECK_FALSE(plain.converged);
   CHECK_FALSE(plain.root);

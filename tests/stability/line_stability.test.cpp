@@ -301,15 +301,18 @@ Outcome<Real> check_iterated(const Cell<Real>& cell, int terms) {
   }
   // Between the two limits: the contact shrinks with speed, never below a third of the glassy
   // width (a(0) dips under its glassy value at V tau ~ 5 a0: 0.394 against 0.464, docs/bem.md).
-  CHECK(s.a(Real(0)) <= 1 + sqrt(eps<Real>()));
-  CHECK(s.l() <= rho * (1 + sqrt(eps<Real>())));
+  // A least-squares minimum meets the equations only to its residual, which moves a and l by
+  // about as much (V tau = 1e-4 a0, l0/a0 = 3: l 4.6e-6 above l0 at residual 4.7e-5).
+  const Real slack = sqrt(eps<Real>()) + (s.root ? Real(0) : s.residual);
+  CHECK(s.a(Real(0)) <= 1 + slack);
+  CHECK(s.l() <= rho * (1 + slack));
   CHECK(s.chi >= 0);
-  report(name + (s.root ? ": converged, residual " : ": least-squares minimum (no root), residual ") +
-         str(s.residual) + ", a(0) " + str(s.a(Real(0))) +
-         " b(0) " + str(s.b(Real(0))) + " l " + str(s.l()) + " d " + str(s.d) + " chi " +
-         str(s.chi) + "; limit errors a " + str(ea) + " l " + str(el) + " d " + str(ed) +
-         " (bound " + str(bound) + "), load " + str(le) + ", min p/mean " + str(pmin) + ", " +
-         str(seconds) + " s");
+  report(name +
+         (s.root ? ": converged, residual " : ": least-squares minimum (no root), residual ") +
+         str(s.residual) + ", a(0) " + str(s.a(Real(0))) + " b(0) " + str(s.b(Real(0))) + " l " +
+         str(s.l()) + " d " + str(s.d) + " chi " + str(s.chi) + "; limit errors a " + str(ea) +
+         " l " + str(el) + " d " + str(ed) + " (bound " + str(bound) + "), load " + str(le) +
+         ", min p/mean " + str(pmin) + ", " + str(seconds) + " s");
   return out;
 }
 

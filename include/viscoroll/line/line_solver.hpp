@@ -102,9 +102,9 @@ struct LineSolution {
   /// converged at a certified least-squares minimum where the equations have no root (the
   /// residual is then reported, and a warning says so).
   bool root;
-  std::string reason;     ///< why it stopped
-  int iterations;         ///< Levenberg-Marquardt iterations (0 for a closed form)
-  Real residual;          ///< max |r| of the scaled equations at the returned solution
+  std::string reason;                 ///< why it stopped
+  int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
+  Real residual;                      ///< max |r| of the scaled equations at the returned solution
   std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
 
   Real c1, vtau, f, compliance;
@@ -229,8 +229,8 @@ class LineSolver {
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol{shape, s.d,     slow.a0,  slow.l,  slow.d, Real(0), true, true,
-                 reason, 0,     Real(0), {},       scene.c1, Real(0), f,     c};
+    Solution sol{shape,  s.d, slow.a0, slow.l, slow.d,   Real(0), true, true,
+                 reason, 0,   Real(0), {},     scene.c1, Real(0), f,    c};
     add_warnings(sol);
     return sol;
   }
@@ -528,8 +528,9 @@ class LineSolver {
     // S at x from the gradient's central differences along the weak directions of J (M3).
     const auto second_order = [&](const Matrix& jtj) {
       const Eigen::SelfAdjointEigenSolver<Matrix> gauss(jtj);  // eigenvalues ascending
-      const Real h = cbrt(eps) * (1 + x.cwiseAbs().maxCoeff());
+      const Vector scale = jtj.diagonal().cwiseSqrt();         // |J e_j|: Marquardt's column scales
       const auto hessian_times = [&](const Vector& v, Vector& hv) {
+        const Real h = cbrt(eps) / std::max(scale.cwiseProduct(v).norm(), eps);
         if (!res.jacobian(x + h * v, r_h, jac_h)) return false;
         g_plus = jac_h.transpose() * r_h;
         if (!res.jacobian(x - h * v, r_h, jac_h)) return false;
@@ -632,22 +633,9 @@ class LineSolver {
     using std::sqrt;
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= 64 * sqrt(std::numeric_limits<Real>::epsilon());
-    Solution sol{res.shape(x),
-                 res.penetration(x),
-                 slow.a0,
-                 slow.l,
-                 slow.d,
-                 Real(0),
-                 converged,
-                 root,
-                 std::move(reason),
-                 iterations,
-                 rmax,
-                 {},
-                 scene.c1,
-                 vtau,
-                 f,
-                 c};
+    Solution sol{
+        res.shape(x),      res.penetration(x), slow.a0, slow.l, slow.d,   Real(0), converged, root,
+        std::move(reason), iterations,         rmax,    {},     scene.c1, vtau,    f,         c};
     sol.chi = rolling_friction(sol);
     add_warnings(sol);
     if (converged && !root)
