@@ -245,6 +245,13 @@ class LineSolver {
     return stages;
   }
 
+  /// max |r| of the scaled equations below which the iterate is a root (`LineSolution::root`):
+  /// the tolerance of iterate()'s stop, minimise()'s hand-back and the solution's flag.
+  static Real root_tolerance() {
+    using std::sqrt;
+    return 64 * sqrt(std::numeric_limits<Real>::epsilon());
+  }
+
   /// The outcome of one Levenberg-Marquardt run.
   struct Outcome {
     bool converged = false;
@@ -339,7 +346,7 @@ class LineSolver {
     const int n = res.unknowns();
     const Real eps = std::numeric_limits<Real>::epsilon();
     const Real step_tol = pow(eps, Real(0.6));
-    const Real residual_tol = 64 * sqrt(eps);
+    const Real residual_tol = root_tolerance();
     Real cost = r.squaredNorm();
     Real mu = Real(1e-3);
     Matrix jac(res.equations(), n);
@@ -513,7 +520,7 @@ class LineSolver {
     using std::sqrt;
     const int n = res.unknowns(), m = res.equations();
     const Real eps = std::numeric_limits<Real>::epsilon();
-    const Real residual_tol = 64 * sqrt(eps);
+    const Real residual_tol = root_tolerance();
     Outcome out;
     out.reason = "iteration limit (least-squares minimisation)";
     Matrix jac(m, n), jac_h(m, n), s_part(n, n);
@@ -567,7 +574,7 @@ class LineSolver {
       const Real floor = 16 * eps * sqrt(Real(m)) * r.norm();  // rounding of phi
       const Vector g = jac.transpose() * r;
       const Matrix jtj = jac.transpose() * jac;
-      if (!fresh && out.iterations == 0 && !second_order(jtj)) return undefined();
+      if (out.iterations == 0 && !second_order(jtj)) return undefined();
       bool accepted = false;
       for (;;) {
         const Eigen::SelfAdjointEigenSolver<Matrix> newton(jtj + s_part);
@@ -630,9 +637,8 @@ class LineSolver {
   Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
                 Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                 const Vector& r, bool converged, std::string reason, int iterations) const {
-    using std::sqrt;
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
-    const bool root = converged && rmax <= 64 * sqrt(std::numeric_limits<Real>::epsilon());
+    const bool root = converged && rmax <= root_tolerance();
     Solution sol{
         res.shape(x),      res.penetration(x), slow.a0, slow.l, slow.d,   Real(0), converged, root,
         std::move(reason), iterations,         rmax,    {},     scene.c1, vtau,    f,         c};
