@@ -4,7 +4,8 @@
 // residual, median wall seconds of `--repeat` solves, reason. The data behind
 // docs/line-solver.md's tables and docs/line-solver-convergence.txt.
 //
-// usage: line_self_convergence <V tau/a0> <terms>... [--repeat R] [--basis t2|s]
+// usage: line_self_convergence <V tau/a0> <terms>... [--repeat R] [--basis t2|s|mapped]
+// [--oversampling K]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,14 +20,20 @@ int main(int argc, char** argv) {
   try {
     std::vector<int> terms;
     int repeat = 1;
+    int oversampling = 1;
     double vtau = -1;
     viscoroll::LineBasis basis = viscoroll::LineBasis::t_squared;
     for (int i = 1; i < argc; ++i) {
       const std::string_view a = argv[i];
       if (a == "--basis" && i + 1 < argc) {
         const std::string_view b = argv[++i];
-        if (b != "t2" && b != "s") throw std::invalid_argument("--basis expects t2 or s");
-        basis = b == "s" ? viscoroll::LineBasis::s : viscoroll::LineBasis::t_squared;
+        if (b != "t2" && b != "s" && b != "mapped")
+          throw std::invalid_argument("--basis expects t2, s or mapped");
+        basis = b == "s"        ? viscoroll::LineBasis::s
+                : b == "mapped" ? viscoroll::LineBasis::s_mapped
+                                : viscoroll::LineBasis::t_squared;
+      } else if (a == "--oversampling" && i + 1 < argc) {
+        oversampling = std::stoi(argv[++i]);
       } else if (a == "--repeat" && i + 1 < argc) {
         repeat = std::stoi(argv[++i]);
         if (repeat < 1 || repeat > 1000) throw std::invalid_argument("--repeat expects 1..1000");
@@ -43,13 +50,14 @@ int main(int argc, char** argv) {
     const viscoroll::StandardLinearSolid<double> material(1, 0.5, f, 1);
     const double load = c1 * 5 / (3 * (1 + f) * material.instantaneous_compliance());  // a0 = 1
     std::printf(
-        "# V tau/a0 = %g; N, converged, iterations, a(0), b(0), l, d (a0 = C1 = 1), chi, residual, "
-        "median seconds of %d, reason\n",
-        vtau, repeat);
+        "# V tau/a0 = %g, oversampling %d; N, converged, iterations, a(0), b(0), l, d (a0 = C1 = "
+        "1), chi, residual, median seconds of %d, reason\n",
+        vtau, oversampling, repeat);
     for (const int n : terms) {
       viscoroll::LineOptions options;
       options.terms = n;
       options.basis = basis;
+      options.oversampling = oversampling;
       const viscoroll::LineSolverD solver(material, options);
       std::vector<double> seconds;
       viscoroll::LineSolverD::Solution s;
@@ -69,7 +77,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr,
                  "line_self_convergence: %s\nusage: line_self_convergence <V tau/a0> <terms>... "
-                 "[--repeat R] [--basis t2|s]\n",
+                 "[--repeat R] [--basis t2|s|mapped] [--oversampling K]\n",
                  e.what());
     return 2;
   }

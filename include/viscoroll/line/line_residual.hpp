@@ -69,11 +69,22 @@ class LineResidual {
   /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
   /// balances each block: (34) at N + 1 points and the load (47) fix the N coefficients of a, l and
   /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b.
+  /// oversampling k >= 1: k (N + 1) points instead, an overdetermined system whose least-squares
+  /// solution is the paper's (Section 7; docs/theory.md section 10).
   LineResidual(LineProblem<Real> problem, int terms,
                LeadingEdgeForm form = LeadingEdgeForm::exterior,
-               LineBasis basis = LineBasis::t_squared)
-      : p_(problem), n_(terms), form_(form), basis_(basis) {
+               LineBasis basis = LineBasis::t_squared, int oversampling = 1)
+      : p_(problem),
+        n_(terms),
+        oversampling_(oversampling),
+        form_(form),
+        basis_(basis),
+        scale_(basis == LineBasis::s_mapped
+                   ? LineShape<Real>::mapped_scale(problem.vtau, problem.f, problem.a_ref)
+                   : Real(0)) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
+    detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,
+                    "1 <= oversampling <= 8");
     using std::cos;
     using std::sqrt;
     const Real pi = boost::math::constants::pi<Real>();
@@ -81,14 +92,16 @@ class LineResidual {
     for (int i = 1; i <= m; ++i) {
       // Chebyshev points in the expansion variable v; t = sqrt(1 - w(v)) in (0, 1).
       const Real v = cos(pi * Real(2 * i - 1) / Real(2 * m));
-      t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, v)));
+      t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, scale_, v)));
     }
     using std::log;
     t_max_ = -log(std::numeric_limits<Real>::epsilon()) + 8;
   }
 
   int terms() const { return n_; }
-  int points() const { return n_ + 1; }
+  /// Collocation points: (N + 1) times the oversampling (N + 1 for the square system).
+  int points() const { return (n_ + 1) * oversampling_; }
+  int oversampling() const { return oversampling_; }
   /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, ln(l / l_ref), d / (C1 a_ref^2).
   int unknowns() const { return 2 * n_ + 3; }
   /// Equations: (34) and the leading-edge condition at each point, then the load (47).
@@ -98,7 +111,7 @@ class LineResidual {
 
   LineShape<Real> shape(const Vector& x) const {
     using std::exp;
-    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}, basis_};
+    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}, basis_, scale_};
     for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
     for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
     return s;
@@ -109,9 +122,9 @@ class LineResidual {
   Vector pack(const LineShape<Real>& given, Real d) const {
     using std::log;
     // Same variable and no more terms: pad with zeros (exact); otherwise re-expand.
-    const bool pad =
-        given.basis == basis_ && int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1;
-    const LineShape<Real> s = pad ? given : given.reexpanded(basis_, n_);
+    const bool pad = given.basis == basis_ && given.scale == scale_ &&
+                     int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1;
+    const LineShape<Real> s = pad ? given : given.reexpanded(basis_, n_, scale_);
     Vector x = Vector::Zero(unknowns());
     for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
     for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
@@ -329,11 +342,32 @@ class LineResidual {
   /// - the equal panels are no wider than 8/N in w, for the same series.
   void append_side_nodes(const LineShape<Real>& s, Real len, Real other, Real x0,
                          std::vector<Real>& sn, std::vector<Real>& sw) const {
-    const Real behind = basis_ == LineBasis::s ? other : Real(other + pole_distance(s));
+    const Real behind =
+        basis_ == LineBasis::t_squared ? Real(other + pole_distance(s)) : Real(other);
     const Real first = std::min({Real(x0 / 2), Real(len / 4), behind});
-    const Real series = basis_ == LineBasis::s ? Real(s.l / (2 * n_ * n_)) : Real(s.l / (2 * n_));
+    const Real series = series_scale(s);
     const Real last = std::min({end_width(s, len), Real(len / 5), series});
     detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_);
+  }
+
+  /// The distance from an end over which the Chebyshev series of a(y), b(y) vary: where the
+  /// expansion variable is 2/N from -1. In t^2, l/(2N); in s = sqrt(1 - t^2), l s^2/2 at s = 1/N;
+  /// in the mapped s, at s = e sinh(asinh(1/e)/N), and no more than a quarter of the distance of
+  /// the map's branch points s = +-i e (1 - t^2 = -e^2, l e^2/2 beyond the end).
+  Real series_scale(const LineShape<Real>& s) const {
+    using std::asinh;
+    using std::sinh;
+    switch (basis_) {
+      case LineBasis::t_squared:
+        return s.l / (2 * n_);
+      case LineBasis::s:
+        return s.l / (2 * n_ * n_);
+      default: {
+        if (LineShape<Real>::mapped_is_identity(scale_)) return s.l / (2 * n_ * n_);
+        const Real sn = scale_ * sinh(asinh(1 / scale_) / n_);
+        return std::min(Real(s.l * sn * sn / 2), Real(s.l * scale_ * scale_ / 8));
+      }
+    }
   }
 
   /// The derivatives of exterior_right in x0 and in ln l (every distance along y stretched by
@@ -518,7 +552,7 @@ class LineResidual {
     da.setZero(unknowns());
     db.setZero(unknowns());
     const Real w = s.one_minus_t2(y);
-    const Real u = LineShape<Real>::coordinate(basis_, w > 0 ? w : Real(0));
+    const Real u = LineShape<Real>::coordinate(basis_, scale_, w > 0 ? w : Real(0));
     Real tkm1 = 1, tk = u;  // T_0, T_1
     for (int k = 0; k <= n_; ++k) {
       const Real tval = k == 0 ? Real(1) : tk;
@@ -555,8 +589,10 @@ class LineResidual {
 
   LineProblem<Real> p_;
   int n_;
+  int oversampling_;
   LeadingEdgeForm form_;
   LineBasis basis_;
+  Real scale_;  ///< e of LineBasis::s_mapped, else 0
   std::vector<Real> t_;
   Real t_max_;
 };

@@ -8,18 +8,24 @@
 // any coefficients. G (36), F0 (33) and Q (46) follow pointwise (docs/theory.md section 4).
 #pragma once
 
+#include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
+#include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
 
-/// The variable in which a(y) and b(y) are expanded (w = 1 - t^2).
+/// The variable in which a(y) and b(y) are expanded (w = 1 - t^2, s = sqrt(w)).
 enum class LineBasis {
   t_squared,  ///< v = 1 - 2 w = 2 t^2 - 1
-  s,          ///< v = 2 sqrt(w) - 1 (resolves odd powers of a ~ sqrt(1 - t^2) at the ends)
+  s,          ///< v = 2 s - 1 (resolves odd powers of a ~ sqrt(1 - t^2) at the ends)
+  /// v = 2 asinh(s/e)/asinh(1/e) - 1 with e = LineShape::scale = V tau/((1 + f) a_ref): resolves
+  /// the layer at the ends of the slow regime, where G has poles at s = +-i j_{0,k} e a_ref/a_end
+  /// (docs/theory.md section 10); tends to `s` as e grows.
+  s_mapped,
 };
 
 /// a(y), b(y) of the contact and the functions of y that follow from them.
@@ -30,26 +36,50 @@ struct LineShape {
   std::vector<Real> alpha;  ///< Chebyshev coefficients of ln(a / (a_ref sqrt(1 - t^2)))
   std::vector<Real> beta;   ///< Chebyshev coefficients of b / a_ref
   LineBasis basis = LineBasis::t_squared;
+  Real scale = 0;  ///< e of LineBasis::s_mapped (unused by the other variables)
+
+  /// The scale e of LineBasis::s_mapped for a scene: V tau/((1 + f) a_ref), the s at which the
+  /// strips turn glassy ((1 + f) a/V tau = 1 with a ~ a_ref s near the ends, Eq. (37)).
+  static Real mapped_scale(Real vtau, Real f, Real a_ref) { return vtau / ((1 + f) * a_ref); }
 
   /// The expansion variable v in [-1, 1] at w = 1 - t^2.
-  static Real coordinate(LineBasis basis, Real w) {
+  static Real coordinate(LineBasis basis, Real scale, Real w) {
+    using std::asinh;
     using std::sqrt;
     switch (basis) {
       case LineBasis::s: return 2 * sqrt(w) - 1;
+      case LineBasis::s_mapped:
+        if (mapped_is_identity(scale)) return 2 * sqrt(w) - 1;
+        return 2 * asinh(sqrt(w) / scale) / asinh(1 / scale) - 1;
       default: return 1 - 2 * w;
     }
   }
   /// w = 1 - t^2 at the expansion variable v.
-  static Real one_minus_t2_at(LineBasis basis, Real v) {
+  static Real one_minus_t2_at(LineBasis basis, Real scale, Real v) {
+    using std::asinh;
+    using std::sinh;
+    const Real h = (1 + v) / 2;
     switch (basis) {
-      case LineBasis::s: { const Real h = (1 + v) / 2; return h * h; }
+      case LineBasis::s:
+        return h * h;
+      case LineBasis::s_mapped: {
+        if (mapped_is_identity(scale)) return h * h;
+        const Real s = std::min(Real(1), Real(scale * sinh(h * asinh(1 / scale))));
+        return s * s;
+      }
       default: return (1 - v) / 2;
     }
+  }
+  /// e sinh(h asinh(1/e)) = h (1 + O(asinh(1/e)^2)): the map is the identity to rounding once
+  /// e > 1/sqrt(eps) (and is not formed there, where sinh would work at the edge of the range).
+  static bool mapped_is_identity(Real scale) {
+    using std::sqrt;
+    return !(scale * sqrt(std::numeric_limits<Real>::epsilon()) < 1);
   }
   /// a / (a_ref sqrt(1 - t^2)) at the ends y = +-l.
   Real end_factor() const {
     using std::exp;
-    return exp(chebyshev(alpha, coordinate(basis, Real(0))));
+    return exp(chebyshev(alpha, coordinate(basis, scale, Real(0))));
   }
 
   /// sum c_k T_k(u) by Clenshaw's recurrence.
@@ -65,12 +95,12 @@ struct LineShape {
 
   /// Chebyshev coefficients (m of them) of g(w(v)) interpolated at the zeros of T_m in v.
   template <class G>
-  static std::vector<Real> interpolate(LineBasis to, int m, const G& g) {
+  static std::vector<Real> interpolate(LineBasis to, Real scale, int m, const G& g) {
     using std::cos;
     const Real pi = boost::math::constants::pi<Real>();
     std::vector<Real> values(m), c(m, Real(0));
     for (int i = 0; i < m; ++i)
-      values[i] = g(one_minus_t2_at(to, cos(pi * Real(2 * i + 1) / Real(2 * m))));
+      values[i] = g(one_minus_t2_at(to, scale, cos(pi * Real(2 * i + 1) / Real(2 * m))));
     for (int k = 0; k < m; ++k) {
       Real sum = 0;
       for (int i = 0; i < m; ++i) sum += values[i] * cos(pi * Real(k) * Real(2 * i + 1) / Real(2 * m));
@@ -89,17 +119,25 @@ struct LineShape {
     using std::exp;
     using std::sqrt;
     if (!(w > 0)) return Real(0);
-    return a_ref * sqrt(w) * exp(chebyshev(alpha, coordinate(basis, w)));
+    return a_ref * sqrt(w) * exp(chebyshev(alpha, coordinate(basis, scale, w)));
   }
   /// b at w = 1 - t^2 in [0, 1].
-  Real b_at(Real w) const { return a_ref * chebyshev(beta, coordinate(basis, w > 0 ? w : Real(0))); }
+  Real b_at(Real w) const {
+    return a_ref * chebyshev(beta, coordinate(basis, scale, w > 0 ? w : Real(0)));
+  }
 
-  /// The same a(y), b(y) (and l) expanded in `to` with n coefficients for ln a and n + 1 for b,
-  /// by Chebyshev interpolation at the zeros of T_n and T_{n+1} in the new variable.
-  LineShape reexpanded(LineBasis to, int n) const {
-    LineShape out{a_ref, l, interpolate(to, n, [&](Real w) { return chebyshev(alpha, coordinate(basis, w)); }),
-                  interpolate(to, n + 1, [&](Real w) { return b_at(w) / a_ref; }), to};
-    return out;
+  /// The same a(y), b(y) (and l) expanded in `to` (with its scale) with n coefficients for ln a
+  /// and n + 1 for b, by Chebyshev interpolation at the zeros of T_n and T_{n+1} in the new
+  /// variable.
+  LineShape reexpanded(LineBasis to, int n, Real to_scale = 0) const {
+    const auto ln_a = [&](Real w) { return chebyshev(alpha, coordinate(basis, scale, w)); };
+    const auto b_over = [&](Real w) { return b_at(w) / a_ref; };
+    return LineShape{a_ref,
+                     l,
+                     interpolate(to, to_scale, n, ln_a),
+                     interpolate(to, to_scale, n + 1, b_over),
+                     to,
+                     to_scale};
   }
 
   /// b(y) for |y| <= l.

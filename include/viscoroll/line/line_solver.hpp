@@ -69,8 +69,13 @@ struct LineOptions {
   int max_iterations = 100;
   /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
   LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
-  /// Expansion variable of a(y), b(y).
+  /// Expansion variable of a(y), b(y); LineBasis::s_mapped with oversampling for the slow regime.
   LineBasis basis = LineBasis::t_squared;
+  /// Collocation points per coefficient of b(y): the equations hold at oversampling (terms + 1)
+  /// points. 1: the square system, solved exactly where it has a root. k > 1: the least-squares
+  /// fit of the paper (Section 7), which converges with `terms` where the line equations have no
+  /// solution at all (the slow regime, V tau <~ 0.1 a0; docs/line-solver.md, "Oversampling").
+  int oversampling = 1;
   /// How the Jacobian is formed: semi-analytic (LineResidual::jacobian, default; the (L6) form
   /// only, the paper's (44) always uses differences) or by forward differences.
   LineJacobian jacobian = LineJacobian::analytic;
@@ -82,6 +87,8 @@ struct LineOptions {
 
   void validate() const {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
+    detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,
+                    "1 <= oversampling <= 8");
     detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations",
                     max_iterations, "1 <= max_iterations <= 100000");
   }
@@ -212,7 +219,7 @@ class LineSolver {
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
         problem(scene, slow, f, scene.speed * material_.relaxation_time()), options_.terms,
-        options_.leading_edge, options_.basis);
+        options_.leading_edge, options_.basis, options_.oversampling);
   }
 
  private:
@@ -292,7 +299,7 @@ class LineSolver {
     Outcome total;
     for (std::size_t k = 0; k < stages.size(); ++k) {
       const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge,
-                                               options_.basis);
+                                               options_.basis, options_.oversampling);
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
@@ -325,10 +332,10 @@ class LineSolver {
         return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason,
                     total.iterations);
     }
-    return failure(
-        scene, slow, c, f, vtau,
-        LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge, options_.basis),
-        Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
+    return failure(scene, slow, c, f, vtau,
+                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge,
+                                                  options_.basis, options_.oversampling),
+                   Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
   }
 
   /// Levenberg-Marquardt with Marquardt's diagonal scaling, from x (with r = res(x)); x and r hold
