@@ -5,7 +5,7 @@
 // docs/line-solver.md's tables and docs/line-solver-convergence.txt.
 //
 // usage: line_self_convergence <V tau/a0> <terms>... [--repeat R] [--basis t2|s|mapped]
-// [--oversampling K]
+//        [--oversampling K] [--max-iterations M]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     std::vector<int> terms;
     int repeat = 1;
     int oversampling = 1;
+    int max_iterations = viscoroll::LineOptions{}.max_iterations;
     double vtau = -1;
     viscoroll::LineBasis basis = viscoroll::LineBasis::t_squared;
     for (int i = 1; i < argc; ++i) {
@@ -34,6 +35,8 @@ int main(int argc, char** argv) {
                                 : viscoroll::LineBasis::t_squared;
       } else if (a == "--oversampling" && i + 1 < argc) {
         oversampling = std::stoi(argv[++i]);
+      } else if (a == "--max-iterations" && i + 1 < argc) {
+        max_iterations = std::stoi(argv[++i]);
       } else if (a == "--repeat" && i + 1 < argc) {
         repeat = std::stoi(argv[++i]);
         if (repeat < 1 || repeat > 1000) throw std::invalid_argument("--repeat expects 1..1000");
@@ -58,6 +61,7 @@ int main(int argc, char** argv) {
       options.terms = n;
       options.basis = basis;
       options.oversampling = oversampling;
+      options.max_iterations = max_iterations;
       const viscoroll::LineSolverD solver(material, options);
       std::vector<double> seconds;
       viscoroll::LineSolverD::Solution s;
@@ -77,7 +81,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr,
                  "line_self_convergence: %s\nusage: line_self_convergence <V tau/a0> <terms>... "
-                 "[--repeat R] [--basis t2|s|mapped] [--oversampling K]\n",
+                 "[--repeat R] [--basis t2|s|mapped] [--oversampling K] [--max-iterations M]\n",
                  e.what());
     return 2;
   }
