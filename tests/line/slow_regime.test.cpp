@@ -75,6 +75,7 @@ TEMPLATE_TEST_CASE("line shape: the mapped variable and its inverse (O3)", "[lin
     const Real v = Real(-1) + Real(i) / 5;
     const Real ws = Shape::one_minus_t2_at(LineBasis::s, Real(0), v);
     CHECK(Shape::one_minus_t2_at(LineBasis::s_mapped, 2 / std::sqrt(eps), v) == ws);
+    CHECK(Shape::one_minus_t2_at(LineBasis::s_mapped, Real(0), v) == ws);  // scale unset
     CHECK(std::abs(Shape::one_minus_t2_at(LineBasis::s_mapped, Real(1e3), v) - ws) <= 2e-7);
   }
 }

@@ -72,9 +72,10 @@ struct LineShape {
   }
   /// e sinh(h asinh(1/e)) = h (1 + O(asinh(1/e)^2)): the map is the identity to rounding once
   /// e > 1/sqrt(eps) (and is not formed there, where sinh would work at the edge of the range).
+  /// An unset scale (e <= 0) is the variable s too.
   static bool mapped_is_identity(Real scale) {
     using std::sqrt;
-    return !(scale * sqrt(std::numeric_limits<Real>::epsilon()) < 1);
+    return !(scale > 0 && scale * sqrt(std::numeric_limits<Real>::epsilon()) < 1);
   }
   /// a / (a_ref sqrt(1 - t^2)) at the ends y = +-l.
   Real end_factor() const {
