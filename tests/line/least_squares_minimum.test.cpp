@@ -20,19 +20,13 @@
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 
+#include "support/paper_scene.hpp"
+
 namespace {
 
 using viscoroll::LineOptions;
 using viscoroll::LineSolverD;
-using viscoroll::StandardLinearSolid;
-
-struct PaperScene {
-  StandardLinearSolid<double> material{1, 0.5, 9, 1};
-  viscoroll::LineScene<double> scene(double vtau) const {
-    const double load = 5.0 / (3 * 10 * material.instantaneous_compliance());
-    return {1, (std::log(20.0) - 1) / 25, load, vtau};
-  }
-};
+using viscoroll::testing::PaperScene;
 
 }  // namespace
 

@@ -17,10 +17,13 @@
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
+#include "support/paper_scene.hpp"
+
 namespace {
 
 using viscoroll::LineBasis;
 using viscoroll::LineShape;
+using viscoroll::testing::PaperScene;
 
 /// ln rho of the Bernstein ellipse of [-1, 1] through z.
 double log_rho(std::complex<double> z) {
@@ -41,14 +44,6 @@ double measured_log_rho(LineBasis basis, double scale, int k1, int k2) {
   };
   return std::log(envelope(k1) / envelope(k2)) / (k2 - k1);
 }
-
-struct PaperScene {
-  viscoroll::StandardLinearSolid<double> material{1, 0.5, 9, 1};
-  viscoroll::LineScene<double> scene(double vtau) const {
-    const double load = 5.0 / (3 * 10 * material.instantaneous_compliance());
-    return {1, (std::log(20.0) - 1) / 25, load, vtau};
-  }
-};
 
 }  // namespace
 

@@ -355,8 +355,6 @@ class LineResidual {
   /// in the mapped s, at s = e sinh(asinh(1/e)/N), and no more than a quarter of the distance of
   /// the map's branch points s = +-i e (1 - t^2 = -e^2, l e^2/2 beyond the end).
   Real series_scale(const LineShape<Real>& s) const {
-    using std::asinh;
-    using std::sinh;
     switch (basis_) {
       case LineBasis::t_squared:
         return s.l / (2 * n_);
@@ -364,7 +362,7 @@ class LineResidual {
         return s.l / (2 * n_ * n_);
       default: {
         if (LineShape<Real>::mapped_is_identity(scale_)) return s.l / (2 * n_ * n_);
-        const Real sn = scale_ * sinh(asinh(1 / scale_) / n_);
+        const Real sn = LineShape<Real>::mapped_s(scale_, Real(1) / n_);
         return std::min(Real(s.l * sn * sn / 2), Real(s.l * scale_ * scale_ / 8));
       }
     }

@@ -56,19 +56,23 @@ struct LineShape {
   }
   /// w = 1 - t^2 at the expansion variable v.
   static Real one_minus_t2_at(LineBasis basis, Real scale, Real v) {
-    using std::asinh;
-    using std::sinh;
     const Real h = (1 + v) / 2;
     switch (basis) {
       case LineBasis::s:
         return h * h;
       case LineBasis::s_mapped: {
-        if (mapped_is_identity(scale)) return h * h;
-        const Real s = std::min(Real(1), Real(scale * sinh(h * asinh(1 / scale))));
+        const Real s = std::min(Real(1), mapped_s(scale, h));
         return s * s;
       }
       default: return (1 - v) / 2;
     }
+  }
+  /// s = e sinh(h asinh(1/e)) of LineBasis::s_mapped at h = (1 + v)/2 in [0, 1] (h itself where
+  /// the map is the identity).
+  static Real mapped_s(Real scale, Real h) {
+    using std::asinh;
+    using std::sinh;
+    return mapped_is_identity(scale) ? h : Real(scale * sinh(h * asinh(1 / scale)));
   }
   /// e sinh(h asinh(1/e)) = h (1 + O(asinh(1/e)^2)): the map is the identity to rounding once
   /// e > 1/sqrt(eps) (and is not formed there, where sinh would work at the edge of the range).
