@@ -1,33 +1,49 @@
-// viscoroll-solve: solve one scene for one or more relaxation times and print one JSON object
-// per line (see README.md). Exit status: 0 all converged, 1 a solution did not converge,
-// 2 bad input (message on stderr, nothing on stdout).
-// --method plane: Hunter's plane problem (--load per unit length, --c2 ignored).
-// --method line: the line-contact solver (--c2 required, --load the total load, --grid N the
-// Chebyshev terms, default 6); the taus are solved in the given order with continuation, and each
-// line also carries l, d, l0, d0 (the static long-term l and d), terms, reason and warnings.
-// --method bem: the 3-D boundary-element solver (--c2 required, --load the total load, --grid N
-// elements per semi-axis of the static long-term Hertz ellipse, default 16); each line carries
-// a0 = a(0), b0 = b(0), l, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason,
-// iterations (active set), gmres_iterations, residual and warnings. docs/bem.md. Warnings of
-// either method also go to stderr, one per line; they do not change the exit status.
+// viscoroll-solve: solve one scene for one or more relaxation times and speeds and print one JSON
+// object per line (or a table; docs/cli.md). Exit status: 0 all converged, 1 a solution did not
+// converge (or the plot failed), 2 bad input (message on stderr, nothing on stdout).
+// The scene comes from options (--mu-d --nu --f --tau --c1 --c2 --load --speed) or from a scene
+// file in SI units (--scene FILE.json, examples/cli/scene_file.hpp). For each tau, each speed is
+// solved in the given order; line and bem continue from the previous converged solution.
+// --method plane: Hunter's plane problem (load per unit length, c2 ignored).
+// --method line: the line-contact solver (--grid N the Chebyshev terms, default 6); each line
+// also carries l, y_minus, y_plus, d, l0, d0 (the static long-term l and d), terms, reason and
+// warnings.
+// --method bem: the 3-D boundary-element solver (--grid N elements per semi-axis of the static
+// long-term Hertz ellipse, default 16); each line carries a0 = a(0), b0 = b(0), l, y_minus,
+// y_plus, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason, iterations (active set),
+// gmres_iterations, residual and warnings. docs/bem.md. Warnings of either method also go to
+// stderr, one per line; they do not change the exit status.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+#include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
+
+extern char** environ;
 
 namespace {
 
+namespace fs = std::filesystem;
+using viscoroll::cli::Format;
 using viscoroll::cli::Method;
 using viscoroll::cli::SolveOptions;
 
@@ -35,33 +51,6 @@ std::string number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
-}
-
-int run_plane(const SolveOptions& o) {
-  using Solver = viscoroll::PlaneSolverD;
-  std::vector<Solver> solvers;
-  const viscoroll::PlaneScene<double> scene{o.c1, o.load, o.speed};
-  scene.validate();
-  for (double tau : o.tau)
-    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau));
-  bool all_converged = true;
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    const auto s = solvers[i].solve(scene);
-    const auto peak = s.peak();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    all_converged = all_converged && s.converged;
-    std::cout << "{\"method\":\"plane\",\"tau\":" << number(o.tau[i])
-              << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << number(s.a)
-              << ",\"b0\":" << number(s.b) << ",\"a_long_term\":" << number(s.a_long_term)
-              << ",\"chi\":" << number(s.chi) << ",\"pmax\":" << number(peak.pressure)
-              << ",\"pmax_x\":" << number(peak.x) << ",\"seconds\":" << number(seconds)
-              << ",\"converged\":" << (s.converged ? "true" : "false")
-              << ",\"iterations\":" << s.iterations << ",\"residual\":" << number(s.residual)
-              << "}\n";
-  }
-  return all_converged ? 0 : 1;
 }
 
 /// A JSON number, or null where the value is not finite (a failed iteration's residual).
@@ -96,10 +85,364 @@ std::string json_strings(const std::vector<std::string>& items) {
   return out + "]";
 }
 
+/// One result: its fields in output order. Numbers and booleans also go to the CSV.
+using Value = std::variant<double, long long, bool, std::string, std::vector<std::string>>;
+struct Field {
+  std::string key;
+  Value value;
+};
+using Record = std::vector<Field>;
+
+const Value* find(const Record& r, std::string_view key) {
+  for (const auto& field : r)
+    if (field.key == key) return &field.value;
+  return nullptr;
+}
+
+double real(const Record& r, std::string_view key) {
+  const Value* v = find(r, key);
+  return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
+}
+
+std::string json_line(const Record& r) {
+  std::string out = "{";
+  for (const auto& [key, value] : r) {
+    if (out.size() > 1) out += ',';
+    out += json_string(key) + ':';
+    if (const auto* x = std::get_if<double>(&value))
+      out += json_number(*x);
+    else if (const auto* n = std::get_if<long long>(&value))
+      out += std::to_string(*n);
+    else if (const auto* b = std::get_if<bool>(&value))
+      out += *b ? "true" : "false";
+    else if (const auto* s = std::get_if<std::string>(&value))
+      out += json_string(*s);
+    else
+      out += json_strings(std::get<std::vector<std::string>>(value));
+  }
+  return out + "}";
+}
+
+bool in_csv(const Value& v) { return !std::holds_alternative<std::string>(v) &&
+                                     !std::holds_alternative<std::vector<std::string>>(v); }
+
+std::string csv_header(const Record& r) {
+  std::string out;
+  for (const auto& [key, value] : r)
+    if (in_csv(value)) out += (out.empty() ? "" : ",") + key;
+  return out;
+}
+
+/// The numbers and booleans of `r`; a non-finite number is an empty cell.
+std::string csv_row(const Record& r) {
+  std::string out;
+  bool first = true;
+  for (const auto& field : r) {
+    if (!in_csv(field.value)) continue;
+    if (!first) out += ',';
+    first = false;
+    if (const auto* x = std::get_if<double>(&field.value))
+      out += std::isfinite(*x) ? number(*x) : "";
+    else if (const auto* n = std::get_if<long long>(&field.value))
+      out += std::to_string(*n);
+    else
+      out += std::get<bool>(field.value) ? "true" : "false";
+  }
+  return out;
+}
+
+/// `name` on PATH, or empty.
+fs::path on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string_view dirs = path ? path : "";
+  while (!dirs.empty()) {
+    const auto colon = dirs.find(':');
+    const fs::path candidate = fs::path(std::string(dirs.substr(0, colon))) / name;
+    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return candidate;
+    if (colon == std::string_view::npos) break;
+    dirs = dirs.substr(colon + 1);
+  }
+  return {};
+}
+
+/// A gnuplot single-quoted string.
+std::string gnuplot_string(const std::string& text) {
+  std::string out = "'";
+  for (const char ch : text) out += ch == '\'' ? std::string("''") : std::string(1, ch);
+  return out + "'";
+}
+
+/// Where results go: stdout (JSON lines or a table), the CSV file, the plot's directory, and
+/// progress on stderr when it is a terminal. open() comes after every input was validated, so
+/// that bad input leaves no output at all.
+class Output {
+ public:
+  Output(const SolveOptions& options, Method method, std::size_t total)
+      : options_(options), method_(method), total_(total) {}
+
+  /// Opens the CSV file and the plot directory; throws std::invalid_argument (exit 2) if they
+  /// cannot be written or gnuplot is not on PATH.
+  void open() {
+    if (!options_.plot.empty()) {
+      gnuplot_ = on_path("gnuplot");
+      if (gnuplot_.empty())
+        throw std::invalid_argument(
+            "viscoroll-solve: --plot needs gnuplot on PATH (Debian: gnuplot-nox); not found");
+      std::error_code ec;
+      fs::create_directories(options_.plot, ec);
+      if (!fs::is_directory(options_.plot))
+        throw std::invalid_argument("viscoroll-solve: --plot " + options_.plot +
+                                    ": cannot create the directory");
+      plot_csv_.open(fs::path(options_.plot) / "sweep.csv");
+      if (!plot_csv_)
+        throw std::invalid_argument("viscoroll-solve: --plot " + options_.plot +
+                                    ": cannot write sweep.csv there");
+    }
+    if (!options_.csv.empty()) {
+      csv_.open(options_.csv);
+      if (!csv_)
+        throw std::invalid_argument("viscoroll-solve: --csv " + options_.csv +
+                                    ": cannot be opened for writing");
+    }
+    progress_ = ::isatty(2) != 0;
+    start_ = std::chrono::steady_clock::now();
+  }
+
+  void add(const Record& r) {
+    ++count_;
+    if (options_.format == Format::json) {
+      std::cout << json_line(r) << "\n";
+    } else {
+      if (count_ == 1) table_header();
+      table_row(r);
+    }
+    std::cout.flush();
+    for (std::ofstream* csv : {&csv_, &plot_csv_}) {
+      if (!csv->is_open()) continue;
+      if (count_ == 1) *csv << csv_header(r) << "\n";
+      *csv << csv_row(r) << "\n";
+      csv->flush();
+    }
+    if (count_ == 1) header_ = csv_header(r);
+    if (progress_) {
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      std::fprintf(stderr, "viscoroll-solve: speed %zu of %zu, elapsed %.1f s\n", count_, total_,
+                   elapsed);
+    }
+  }
+
+  /// Closes the files and draws the plot; false (with a message) if gnuplot failed.
+  bool finish() {
+    if (csv_.is_open()) csv_.close();
+    if (!plot_csv_.is_open()) return true;
+    plot_csv_.close();
+    return plot();
+  }
+
+ private:
+  bool three_d() const { return method_ != Method::plane; }
+
+  void table_header() {
+    std::printf("%-12s %-12s %-12s %-13s %-13s", "tau", "speed", "Vtau/a_lt", "a0", "b0");
+    if (three_d()) std::printf(" %-13s %-13s", "l", "d");
+    std::printf(" %-13s %s\n", "chi", "converged");
+  }
+
+  static std::string cell(double x, int precision) {
+    if (!std::isfinite(x)) return "-";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.*g", precision, x);
+    return buffer;
+  }
+
+  void table_row(const Record& r) {
+    const Value* converged = find(r, "converged");
+    std::printf("%-12s %-12s %-12s %-13s %-13s", cell(real(r, "tau"), 6).c_str(),
+                cell(real(r, "speed"), 6).c_str(),
+                cell(real(r, "vtau") / real(r, "a_long_term"), 6).c_str(),
+                cell(real(r, "a0"), 7).c_str(), cell(real(r, "b0"), 7).c_str());
+    if (three_d())
+      std::printf(" %-13s %-13s", cell(real(r, "l"), 7).c_str(), cell(real(r, "d"), 7).c_str());
+    std::printf(" %-13s %s\n", cell(real(r, "chi"), 7).c_str(),
+                converged && std::get<bool>(*converged) ? "yes" : "no");
+  }
+
+  /// 1-based column of `key` in the CSV, or 0.
+  int column(std::string_view key) const {
+    int k = 1;
+    std::string_view rest = header_;
+    while (true) {
+      const auto comma = rest.find(',');
+      if (rest.substr(0, comma) == key) return k;
+      if (comma == std::string_view::npos) return 0;
+      rest = rest.substr(comma + 1);
+      ++k;
+    }
+  }
+
+  bool plot() {
+    const fs::path dir = fs::absolute(options_.plot);
+    const std::string data = gnuplot_string((dir / "sweep.csv").string());
+    const fs::path script_path = dir / "sweep.gp";
+    std::ofstream script(script_path);
+    const auto series = [&](std::string_view key, std::string_view title) {
+      return "data skip 1 using " + std::to_string(column("speed")) + ":" +
+             std::to_string(column(key)) + " with linespoints title '" + std::string(title) + "'";
+    };
+    script << "# Written by viscoroll-solve --plot: " << method_name(method_)
+           << " sweep against speed.\n"
+           << "data = " << data << "\n"
+           << "set datafile separator ','\n"
+           << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+           << "  set terminal pngcairo size 900,900 font ',10'\n"
+           << "} else {\n"
+           << "  set terminal png size 900,900\n"
+           << "}\n"
+           << "set output " << gnuplot_string((dir / "sweep.png").string()) << "\n"
+           << "set logscale x\nset grid\nset key outside right\n"
+           << "set multiplot layout 2,1 title 'viscoroll-solve --method " << method_name(method_)
+           << "'\n"
+           << "set ylabel 'length (input units)'\n"
+           << "plot " << series("a0", "a(0)") << ", \\\n  " << series("b0", "b(0)");
+    if (three_d()) script << ", \\\n  " << series("l", "l") << ", \\\n  " << series("d", "d");
+    script << "\nset xlabel 'speed'\nset ylabel 'chi'\n"
+           << "plot " << series("chi", "chi") << "\nunset multiplot\n";
+    script.close();
+    if (!script) {
+      std::cerr << "viscoroll-solve: --plot: cannot write " << script_path.string() << "\n";
+      return false;
+    }
+    const std::string program = gnuplot_.string(), argument = script_path.string();
+    std::vector<char*> argv = {const_cast<char*>(program.c_str()),
+                               const_cast<char*>(argument.c_str()), nullptr};
+    pid_t pid = 0;
+    int status = 0;
+    if (::posix_spawn(&pid, program.c_str(), nullptr, nullptr, argv.data(), environ) != 0 ||
+        ::waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+      std::cerr << "viscoroll-solve: --plot: gnuplot " << argument << " failed\n";
+      return false;
+    }
+    return true;
+  }
+
+  const SolveOptions& options_;
+  Method method_;
+  std::size_t total_, count_ = 0;
+  std::ofstream csv_, plot_csv_;
+  std::string header_;
+  fs::path gnuplot_;
+  bool progress_ = false;
+  std::chrono::steady_clock::time_point start_;
+};
+
+/// The scene as the solvers take it, from options or from a scene file.
+struct Problem {
+  Method method = Method::plane;
+  double mu_d = 0, nu = 0, f = 0;
+  std::vector<double> tau;
+  double c1 = 0;
+  std::optional<double> c2;
+  double load = 0;
+  std::vector<double> speeds;
+  std::optional<long> grid;
+};
+
+Problem from_options(const SolveOptions& o) {
+  return {*o.method, o.mu_d, o.nu, o.f, o.tau, o.c1, o.c2, o.load, o.speeds, o.grid};
+}
+
+Problem from_scene(const SolveOptions& o) {
+  using namespace viscoroll::cli;
+  Scene scene = parse_scene(read_scene_file(o.scene), o.scene);
+  const std::optional<Method> method = o.method ? o.method : scene.method;
+  if (!method)
+    throw std::invalid_argument("viscoroll-solve: " + o.scene +
+                                ": no method: give --method plane|line|bem or \"method\" in the "
+                                "scene");
+  if (o.grid) scene.grid.reset();
+  check_scene_for_method(scene, *method, o.scene);
+  Problem p;
+  p.method = *method;
+  p.grid = o.grid ? o.grid : scene.grid;
+  p.load = scene.load;
+  p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
+  std::visit(
+      [&](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (std::is_same_v<M, ElasticModel>) {
+          p.mu_d = m.mu, p.nu = m.nu, p.f = 0, p.tau = {0.0};
+        } else {
+          static_assert(std::is_same_v<M, StandardLinearSolidModel>);
+          p.mu_d = m.mu_d, p.nu = m.nu, p.f = m.f, p.tau = {m.tau};
+        }
+      },
+      scene.material);
+  std::visit(
+      [&](const auto& r) {
+        using R = std::decay_t<decltype(r)>;
+        if constexpr (std::is_same_v<R, EllipsoidProfile>) {
+          p.c1 = r.c1, p.c2 = r.c2;
+        } else {
+          static_assert(std::is_same_v<R, CylinderProfile>);
+          p.c1 = 1 / r.radius;
+        }
+      },
+      scene.roller);
+  return p;
+}
+
+/// "tau = T" (and ", speed = V" in a sweep of several speeds), for messages.
+std::string label(const Problem& p, double tau, double speed) {
+  using viscoroll::cli::scene_detail::shortest;
+  return "tau = " + shortest(tau) + (p.speeds.size() > 1 ? ", speed = " + shortest(speed) : "");
+}
+
+int run_plane(const Problem& p, Output& out) {
+  using Solver = viscoroll::PlaneSolverD;
+  std::vector<viscoroll::PlaneScene<double>> scenes;
+  for (double speed : p.speeds) {
+    scenes.push_back({p.c1, p.load, speed});
+    scenes.back().validate();
+  }
+  std::vector<Solver> solvers;
+  for (double tau : p.tau)
+    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau));
+  out.open();
+  bool all_converged = true;
+  for (std::size_t i = 0; i < solvers.size(); ++i)
+    for (const auto& scene : scenes) {
+      const auto start = std::chrono::steady_clock::now();
+      const auto s = solvers[i].solve(scene);
+      const auto peak = s.peak();
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      all_converged = all_converged && s.converged;
+      out.add({{"method", std::string("plane")},
+               {"tau", p.tau[i]},
+               {"speed", scene.speed},
+               {"vtau", scene.speed * p.tau[i]},
+               {"a0", s.a},
+               {"b0", s.b},
+               {"a_long_term", s.a_long_term},
+               {"chi", s.chi},
+               {"pmax", peak.pressure},
+               {"pmax_x", peak.x},
+               {"seconds", seconds},
+               {"converged", s.converged},
+               {"iterations", static_cast<long long>(s.iterations)},
+               {"residual", s.residual}});
+      if (!s.converged)
+        std::cerr << "viscoroll-solve: plane solution for " << label(p, p.tau[i], scene.speed)
+                  << " did not converge\n";
+    }
+  return all_converged ? 0 : 1;
+}
+
 /// --grid for the line method: LineOptions::terms, default 6.
-int line_terms(const SolveOptions& o) {
+int line_terms(const Problem& p) {
   constexpr long default_terms = 6, max_terms = 64;
-  const long n = o.grid.value_or(default_terms);
+  const long n = p.grid.value_or(default_terms);
   if (n < 1 || n > max_terms)
     throw std::invalid_argument(
         "viscoroll-solve: --grid (line: Chebyshev terms) expects 1 <= N <= " +
@@ -107,60 +450,77 @@ int line_terms(const SolveOptions& o) {
   return static_cast<int>(n);
 }
 
-/// The line-contact (3-D) solver; the taus are solved in the given order, each seeded with the
-/// previous converged iterated solution (continuation; a closed form carries no more than the
-/// solver's own seed, so it is not passed on).
-int run_line(const SolveOptions& o) {
+/// The line-contact (3-D) solver; for each tau the speeds are solved in the given order, each
+/// seeded with the previous converged iterated solution (continuation; a closed form carries no
+/// more than the solver's own seed, so it is not passed on).
+int run_line(const Problem& p, Output& out) {
   using Solver = viscoroll::LineSolverD;
   using Solution = Solver::Solution;
-  if (!o.c2)
+  if (!p.c2)
     throw std::invalid_argument("viscoroll-solve: --method line needs --c2; " +
                                 viscoroll::cli::usage());
   viscoroll::LineOptions options;
-  options.terms = line_terms(o);
-  const viscoroll::LineScene<double> scene{o.c1, *o.c2, o.load, o.speed};
-  scene.validate();
+  options.terms = line_terms(p);
+  std::vector<viscoroll::LineScene<double>> scenes;
+  for (double speed : p.speeds) {
+    scenes.push_back({p.c1, *p.c2, p.load, speed});
+    scenes.back().validate();
+  }
   std::vector<Solver> solvers;
-  for (double tau : o.tau)
-    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau), options);
+  for (double tau : p.tau)
+    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau), options);
+  out.open();
   bool all_converged = true;
   std::optional<Solution> previous;
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    const Solution* seed =
-        previous && previous->converged && previous->iterations > 0 ? &*previous : nullptr;
-    Solution s = solvers[i].solve(scene, seed);
-    const auto peak = s.strip(0.0).peak();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    all_converged = all_converged && s.converged;
-    const std::string warnings = json_strings(s.warnings);
-    std::cout << "{\"method\":\"line\",\"tau\":" << number(o.tau[i])
-              << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << json_number(s.a(0.0))
-              << ",\"b0\":" << json_number(s.b(0.0)) << ",\"l\":" << json_number(s.l())
-              << ",\"d\":" << json_number(s.d) << ",\"a_long_term\":" << number(s.a_long_term)
-              << ",\"l0\":" << number(s.l_long_term) << ",\"d0\":" << number(s.d_long_term)
-              << ",\"chi\":" << json_number(s.chi) << ",\"pmax\":" << json_number(peak.pressure)
-              << ",\"pmax_x\":" << json_number(peak.x) << ",\"seconds\":" << number(seconds)
-              << ",\"converged\":" << (s.converged ? "true" : "false")
-              << ",\"root\":" << (s.root ? "true" : "false") << ",\"iterations\":" << s.iterations
-              << ",\"residual\":" << json_number(s.residual) << ",\"terms\":" << options.terms
-              << ",\"reason\":" << json_string(s.reason) << ",\"warnings\":" << warnings << "}\n";
-    for (const auto& w : s.warnings)
-      std::cerr << "viscoroll-solve: warning: line solution for tau = " << number(o.tau[i]) << ": "
-                << w << "\n";
-    if (!s.converged)
-      std::cerr << "viscoroll-solve: line solution for tau = " << number(o.tau[i])
-                << " did not converge: " << s.reason << "\n";
-    previous = std::move(s);
-  }
+  for (std::size_t i = 0; i < solvers.size(); ++i)
+    for (const auto& scene : scenes) {
+      const auto start = std::chrono::steady_clock::now();
+      const Solution* seed =
+          previous && previous->converged && previous->iterations > 0 ? &*previous : nullptr;
+      Solution s = solvers[i].solve(scene, seed);
+      const auto peak = s.strip(0.0).peak();
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      all_converged = all_converged && s.converged;
+      out.add({{"method", std::string("line")},
+               {"tau", p.tau[i]},
+               {"speed", scene.speed},
+               {"vtau", scene.speed * p.tau[i]},
+               {"a0", s.a(0.0)},
+               {"b0", s.b(0.0)},
+               {"l", s.l()},
+               {"y_minus", -s.l()},
+               {"y_plus", s.l()},
+               {"d", s.d},
+               {"a_long_term", s.a_long_term},
+               {"l0", s.l_long_term},
+               {"d0", s.d_long_term},
+               {"chi", s.chi},
+               {"pmax", peak.pressure},
+               {"pmax_x", peak.x},
+               {"seconds", seconds},
+               {"converged", s.converged},
+               {"root", s.root},
+               {"iterations", static_cast<long long>(s.iterations)},
+               {"residual", s.residual},
+               {"terms", static_cast<long long>(options.terms)},
+               {"reason", s.reason},
+               {"warnings", s.warnings}});
+      const std::string which = label(p, p.tau[i], scene.speed);
+      for (const auto& w : s.warnings)
+        std::cerr << "viscoroll-solve: warning: line solution for " << which << ": " << w << "\n";
+      if (!s.converged)
+        std::cerr << "viscoroll-solve: line solution for " << which
+                  << " did not converge: " << s.reason << "\n";
+      previous = std::move(s);
+    }
   return all_converged ? 0 : 1;
 }
 
 /// --grid for the bem method: elements per semi-axis, default 16.
-int bem_grid(const SolveOptions& o) {
+int bem_grid(const Problem& p) {
   constexpr long default_grid = 16, max_grid = 512;
-  const long n = o.grid.value_or(default_grid);
+  const long n = p.grid.value_or(default_grid);
   if (n < 2 || n > max_grid)
     throw std::invalid_argument(
         "viscoroll-solve: --grid (bem: elements per semi-axis) expects 2 <= N <= " +
@@ -168,56 +528,72 @@ int bem_grid(const SolveOptions& o) {
   return static_cast<int>(n);
 }
 
-/// The boundary-element solver; the taus share one grid (it is sized by the static long-term
-/// contact), and each solve starts from the previous converged contact.
-int run_bem(const SolveOptions& o) {
+/// The boundary-element solver; every solve shares one grid (it is sized by the static
+/// long-term contact), and each starts from the previous converged contact.
+int run_bem(const Problem& p, Output& out) {
   using Solver = viscoroll::BemSolverD;
   using Solution = viscoroll::BemSolution<double>;
-  if (!o.c2)
+  if (!p.c2)
     throw std::invalid_argument("viscoroll-solve: --method bem needs --c2; " +
                                 viscoroll::cli::usage());
   viscoroll::BemOptions options;
-  options.grid = bem_grid(o);
-  const viscoroll::BemScene<double> scene{o.c1, *o.c2, o.load, o.speed};
-  scene.validate();
+  options.grid = bem_grid(p);
+  std::vector<viscoroll::BemScene<double>> scenes;
+  for (double speed : p.speeds) {
+    scenes.push_back({p.c1, *p.c2, p.load, speed});
+    scenes.back().validate();
+  }
   std::vector<Solver> solvers;
-  for (double tau : o.tau)
-    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau), options);
+  for (double tau : p.tau)
+    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau), options);
+  out.open();
   bool all_converged = true;
   std::optional<Solution> previous;
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    const Solution* seed = previous && previous->converged ? &*previous : nullptr;
-    Solution s = solvers[i].solve(scene, seed);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    all_converged = all_converged && s.converged;
-    std::size_t peak = 0;
-    for (std::size_t q = 0; q < s.pressure.size(); ++q)
-      if (s.pressure[q] > s.pressure[peak]) peak = q;
-    const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
-    std::cout << "{\"method\":\"bem\",\"tau\":" << number(o.tau[i])
-              << ",\"vtau\":" << number(o.speed * o.tau[i]) << ",\"a0\":" << json_number(s.a0)
-              << ",\"b0\":" << json_number(s.b0) << ",\"l\":" << json_number(s.l)
-              << ",\"d\":" << json_number(s.d) << ",\"a_long_term\":" << number(s.long_term.a)
-              << ",\"l0\":" << number(s.long_term.b) << ",\"d0\":" << number(s.long_term.d)
-              << ",\"chi\":" << json_number(s.chi) << ",\"pmax\":" << json_number(s.pressure[peak])
-              << ",\"pmax_x\":" << json_number(s.grid.x(peak_i))
-              << ",\"seconds\":" << number(seconds)
-              << ",\"converged\":" << (s.converged ? "true" : "false")
-              << ",\"iterations\":" << s.iterations
-              << ",\"gmres_iterations\":" << s.krylov_iterations
-              << ",\"residual\":" << json_number(s.residual) << ",\"grid\":" << options.grid
-              << ",\"cells\":" << s.grid.size() << ",\"reason\":" << json_string(s.reason)
-              << ",\"warnings\":" << json_strings(s.warnings) << "}\n";
-    for (const auto& w : s.warnings)
-      std::cerr << "viscoroll-solve: warning: bem solution for tau = " << number(o.tau[i]) << ": "
-                << w << "\n";
-    if (!s.converged)
-      std::cerr << "viscoroll-solve: bem solution for tau = " << number(o.tau[i])
-                << " did not converge: " << s.reason << "\n";
-    previous = std::move(s);
-  }
+  for (std::size_t i = 0; i < solvers.size(); ++i)
+    for (const auto& scene : scenes) {
+      const auto start = std::chrono::steady_clock::now();
+      const Solution* seed = previous && previous->converged ? &*previous : nullptr;
+      Solution s = solvers[i].solve(scene, seed);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      all_converged = all_converged && s.converged;
+      std::size_t peak = 0;
+      for (std::size_t q = 0; q < s.pressure.size(); ++q)
+        if (s.pressure[q] > s.pressure[peak]) peak = q;
+      const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
+      out.add({{"method", std::string("bem")},
+               {"tau", p.tau[i]},
+               {"speed", scene.speed},
+               {"vtau", scene.speed * p.tau[i]},
+               {"a0", s.a0},
+               {"b0", s.b0},
+               {"l", s.l},
+               {"y_minus", -s.l},
+               {"y_plus", s.l},
+               {"d", s.d},
+               {"a_long_term", s.long_term.a},
+               {"l0", s.long_term.b},
+               {"d0", s.long_term.d},
+               {"chi", s.chi},
+               {"pmax", s.pressure[peak]},
+               {"pmax_x", s.grid.x(peak_i)},
+               {"seconds", seconds},
+               {"converged", s.converged},
+               {"iterations", static_cast<long long>(s.iterations)},
+               {"gmres_iterations", static_cast<long long>(s.krylov_iterations)},
+               {"residual", s.residual},
+               {"grid", static_cast<long long>(options.grid)},
+               {"cells", static_cast<long long>(s.grid.size())},
+               {"reason", s.reason},
+               {"warnings", s.warnings}});
+      const std::string which = label(p, p.tau[i], scene.speed);
+      for (const auto& w : s.warnings)
+        std::cerr << "viscoroll-solve: warning: bem solution for " << which << ": " << w << "\n";
+      if (!s.converged)
+        std::cerr << "viscoroll-solve: bem solution for " << which
+                  << " did not converge: " << s.reason << "\n";
+      previous = std::move(s);
+    }
   return all_converged ? 0 : 1;
 }
 
@@ -227,14 +603,21 @@ int main(int argc, char** argv) {
   try {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
-    switch (options.method) {
+    const Problem problem = options.scene.empty() ? from_options(options) : from_scene(options);
+    Output out(options, problem.method, problem.tau.size() * problem.speeds.size());
+    int status = 0;
+    switch (problem.method) {
       case Method::plane:
-        return run_plane(options);
+        status = run_plane(problem, out);
+        break;
       case Method::line:
-        return run_line(options);
+        status = run_line(problem, out);
+        break;
       case Method::bem:
-        return run_bem(options);
+        status = run_bem(problem, out);
+        break;
     }
+    return out.finish() ? status : 1;
   } catch (const std::invalid_argument& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -242,5 +625,4 @@ int main(int argc, char** argv) {
     std::cerr << "viscoroll-solve: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

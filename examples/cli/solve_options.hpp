@@ -17,17 +17,48 @@ namespace viscoroll::cli {
 
 enum class Method { plane, line, bem };
 
+/// How results go to stdout: one JSON object per line, or an aligned table.
+enum class Format { json, table };
+
+/// The method named `text`, or nothing.
+inline std::optional<Method> parse_method(std::string_view text) {
+  if (text == "plane") return Method::plane;
+  if (text == "line") return Method::line;
+  if (text == "bem") return Method::bem;
+  return std::nullopt;
+}
+
+inline const char* method_name(Method m) {
+  switch (m) {
+    case Method::plane:
+      return "plane";
+    case Method::line:
+      return "line";
+    case Method::bem:
+      return "bem";
+  }
+  return "?";
+}
+
 struct SolveOptions {
-  Method method = Method::plane;
-  double mu_d = 0, nu = 0, f = 0, speed = 0, c1 = 0, load = 0;
+  std::optional<Method> method;  ///< required without --scene; with it, overrides the file's
+  double mu_d = 0, nu = 0, f = 0, c1 = 0, load = 0;
   std::optional<double> c2;
-  std::vector<double> tau;   ///< one solution per value
-  std::optional<long> grid;  ///< discretisation size (line: terms; bem: elements per semi-axis)
+  std::vector<double> tau;     ///< one solution per value (and per speed)
+  std::vector<double> speeds;  ///< the sweep, in the given order; with --scene, may be empty
+  std::optional<long> grid;    ///< discretisation size (line: terms; bem: elements per semi-axis)
+  std::string scene;           ///< --scene FILE: the material, the roller, the load and speeds
+  Format format = Format::json;
+  std::string csv;   ///< --csv FILE: the sweep as CSV too (empty: none)
+  std::string plot;  ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
 };
 
 inline std::string usage() {
   return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
-         "--speed V --c1 C1 [--c2 C2] --load P [--grid N]";
+         "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
+         "[--csv FILE] [--plot DIR]\n"
+         "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
+         "[--speed V[,V...]] [--format json|table] [--csv FILE] [--plot DIR]";
 }
 
 /// A finite number, the whole of `text`.
@@ -36,63 +67,118 @@ inline double parse_number(std::string_view option, std::string_view text) {
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
-    throw std::invalid_argument("viscoroll-solve: " + std::string(option) + " expects a finite number, got '" +
-                                std::string(text) + "'");
+    throw std::invalid_argument("viscoroll-solve: " + std::string(option) +
+                                " expects a finite number, got '" + std::string(text) + "'");
   return value;
 }
 
-/// Parses argv[1..]; throws std::invalid_argument on unknown, repeated, missing or malformed
-/// options. Physical ranges are checked later by the library, which names the parameter.
+/// A comma-separated list of finite numbers ("1,2,3").
+inline std::vector<double> parse_numbers(std::string_view option, std::string_view text) {
+  std::vector<double> values;
+  while (true) {
+    const auto comma = text.find(',');
+    values.push_back(parse_number(option, text.substr(0, comma)));
+    if (comma == std::string_view::npos) break;
+    text = text.substr(comma + 1);
+  }
+  return values;
+}
+
+/// Parses argv[1..]; throws std::invalid_argument on unknown, repeated, missing, conflicting or
+/// malformed options. Physical ranges are checked later by the library (or the scene reader),
+/// which names the parameter.
 inline SolveOptions parse_solve_options(const std::vector<std::string_view>& args) {
-  static const std::set<std::string_view> known = {"--method", "--mu-d", "--nu",  "--f",    "--tau",
-                                                   "--speed",  "--c1",   "--c2",  "--load", "--grid"};
+  static const std::set<std::string_view> known = {
+      "--method", "--mu-d", "--nu",   "--f",      "--tau", "--speed", "--c1",
+      "--c2",     "--load", "--grid", "--scene", "--format", "--csv", "--plot"};
+  // Given by a scene file; with --scene they are a conflict.
+  static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
+                                                           "--c1",   "--c2", "--load"};
   std::map<std::string_view, std::string_view> given;
+  const auto unknown = [](std::string_view key) {
+    return std::invalid_argument("viscoroll-solve: unknown option '" + std::string(key) + "'; " +
+                                 usage());
+  };
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string_view key = args[i], value;
     if (const auto eq = key.find('='); key.starts_with("--") && eq != std::string_view::npos) {
       value = key.substr(eq + 1);
       key = key.substr(0, eq);
     } else {
-      if (!known.count(key)) throw std::invalid_argument("viscoroll-solve: unknown option '" + std::string(key) + "'; " + usage());
-      if (i + 1 >= args.size()) throw std::invalid_argument("viscoroll-solve: " + std::string(key) + " needs a value");
+      if (!known.count(key)) throw unknown(key);
+      if (i + 1 >= args.size())
+        throw std::invalid_argument("viscoroll-solve: " + std::string(key) + " needs a value");
       value = args[++i];
     }
-    if (!known.count(key)) throw std::invalid_argument("viscoroll-solve: unknown option '" + std::string(key) + "'; " + usage());
+    if (!known.count(key)) throw unknown(key);
     if (!given.emplace(key, value).second)
       throw std::invalid_argument("viscoroll-solve: " + std::string(key) + " given twice");
   }
   auto required = [&](std::string_view key) {
     const auto it = given.find(key);
-    if (it == given.end()) throw std::invalid_argument("viscoroll-solve: missing " + std::string(key) + "; " + usage());
+    if (it == given.end())
+      throw std::invalid_argument("viscoroll-solve: missing " + std::string(key) + "; " + usage());
     return it->second;
   };
   SolveOptions o;
-  const std::string_view method = required("--method");
-  if (method == "plane") o.method = Method::plane;
-  else if (method == "line") o.method = Method::line;
-  else if (method == "bem") o.method = Method::bem;
-  else throw std::invalid_argument("viscoroll-solve: --method expects plane, line or bem, got '" + std::string(method) + "'");
-  o.mu_d = parse_number("--mu-d", required("--mu-d"));
-  o.nu = parse_number("--nu", required("--nu"));
-  o.f = parse_number("--f", required("--f"));
-  o.speed = parse_number("--speed", required("--speed"));
-  o.c1 = parse_number("--c1", required("--c1"));
-  o.load = parse_number("--load", required("--load"));
-  if (given.count("--c2")) o.c2 = parse_number("--c2", given["--c2"]);
-  std::string_view taus = required("--tau");
-  while (true) {
-    const auto comma = taus.find(',');
-    o.tau.push_back(parse_number("--tau", taus.substr(0, comma)));
-    if (comma == std::string_view::npos) break;
-    taus = taus.substr(comma + 1);
+  if (given.count("--scene")) {
+    o.scene = std::string(given["--scene"]);
+    if (o.scene.empty())
+      throw std::invalid_argument("viscoroll-solve: --scene expects a file name, got ''");
+    for (const auto key : scene_keys)
+      if (given.count(key))
+        throw std::invalid_argument(
+            "viscoroll-solve: --scene excludes " + std::string(key) +
+            " (the scene file gives the material, the roller and the load; only --method, "
+            "--grid, --speed, --format, --csv and --plot may go with it)");
+  }
+  if (given.count("--method") || o.scene.empty()) {
+    const std::string_view method = required("--method");
+    o.method = parse_method(method);
+    if (!o.method)
+      throw std::invalid_argument("viscoroll-solve: --method expects plane, line or bem, got '" +
+                                  std::string(method) + "'");
+  }
+  if (o.scene.empty()) {
+    o.mu_d = parse_number("--mu-d", required("--mu-d"));
+    o.nu = parse_number("--nu", required("--nu"));
+    o.f = parse_number("--f", required("--f"));
+    o.c1 = parse_number("--c1", required("--c1"));
+    o.load = parse_number("--load", required("--load"));
+    if (given.count("--c2")) o.c2 = parse_number("--c2", given["--c2"]);
+    o.tau = parse_numbers("--tau", required("--tau"));
+    o.speeds = parse_numbers("--speed", required("--speed"));
+  } else if (given.count("--speed")) {
+    o.speeds = parse_numbers("--speed", given["--speed"]);
   }
   if (given.count("--grid")) {
     const std::string_view text = given["--grid"];
     long n = 0;
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
     if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || n < 1)
-      throw std::invalid_argument("viscoroll-solve: --grid expects a positive integer, got '" + std::string(text) + "'");
+      throw std::invalid_argument("viscoroll-solve: --grid expects a positive integer, got '" +
+                                  std::string(text) + "'");
     o.grid = n;
+  }
+  if (given.count("--format")) {
+    const std::string_view format = given["--format"];
+    if (format == "json")
+      o.format = Format::json;
+    else if (format == "table")
+      o.format = Format::table;
+    else
+      throw std::invalid_argument("viscoroll-solve: --format expects json or table, got '" +
+                                  std::string(format) + "'");
+  }
+  if (given.count("--csv")) {
+    o.csv = std::string(given["--csv"]);
+    if (o.csv.empty())
+      throw std::invalid_argument("viscoroll-solve: --csv expects a file name, got ''");
+  }
+  if (given.count("--plot")) {
+    o.plot = std::string(given["--plot"]);
+    if (o.plot.empty())
+      throw std::invalid_argument("viscoroll-solve: --plot expects a directory, got ''");
   }
   return o;
 }

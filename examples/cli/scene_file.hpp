@@ -1,0 +1,390 @@
+// viscoroll-solve: the scene file (docs/cli.md), a JSON object in SI units. parse_scene is a pure
+// function from text to a Scene, so that tests and the fuzzer drive it without files;
+// read_scene_file does the file's part (missing, a directory, empty, over 1 MiB). Every error
+// throws std::invalid_argument whose message names the file, the key with its path
+// ("material.f", "speeds[2]") and the valid range. Uses nlohmann-json, a dependency of the
+// command-line tool only (never of include/).
+//
+// A new material model or roller profile is one alternative of MaterialModel or RollerProfile
+// and one entry of material_readers() or roller_readers().
+#pragma once
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "solve_options.hpp"
+
+namespace viscoroll::cli {
+
+/// A linear elastic half space: shear modulus mu (Pa), Poisson's ratio nu.
+struct ElasticModel {
+  double mu = 0, nu = 0;
+};
+
+/// Eq. (1) of the paper: instantaneous shear modulus mu_d (Pa), nu, creep ratio f, relaxation
+/// time tau (s).
+struct StandardLinearSolidModel {
+  double mu_d = 0, nu = 0, f = 0, tau = 0;
+};
+
+using MaterialModel = std::variant<ElasticModel, StandardLinearSolidModel>;
+
+/// The doubly parabolic roller of the paper (Eq. 27): curvatures c1 across, c2 along (1/m).
+struct EllipsoidProfile {
+  double c1 = 0, c2 = 0;
+};
+
+/// A cylinder of radius `radius` (m): the plane method's roller, c1 = 1/radius.
+struct CylinderProfile {
+  double radius = 0;
+};
+
+using RollerProfile = std::variant<EllipsoidProfile, CylinderProfile>;
+
+struct Scene {
+  std::string description;
+  MaterialModel material;
+  RollerProfile roller;
+  double load = 0;  ///< N (line, bem) or N/m (plane)
+  std::vector<double> speeds;
+  std::optional<Method> method;
+  std::optional<long> grid;
+};
+
+/// The largest scene file read, in bytes.
+inline constexpr std::size_t max_scene_bytes = std::size_t(1) << 20;
+
+namespace scene_detail {
+
+using nlohmann::json;
+
+/// The shortest decimal that reads back as x ("0.7", "inf").
+inline std::string shortest(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+inline std::string type_of(const json& value) {
+  if (value.is_number_integer()) return "integer";
+  if (value.is_number()) return "number";
+  return value.type_name();
+}
+
+/// One JSON object of the scene, read key by key. The constructor rejects keys outside
+/// `allowed`; each reader names the key with its path in its error.
+class ObjectReader {
+ public:
+  ObjectReader(std::string source, const json& object, std::string path,
+               std::vector<std::string> allowed, std::string what)
+      : source_(std::move(source)), object_(object), path_(std::move(path)) {
+    if (!object_.is_object())
+      fail((path_.empty() ? std::string("the scene") : path_) + " must be a JSON object, got " +
+           type_of(object_));
+    for (const auto& item : object_.items())
+      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
+        std::string list;
+        for (const auto& key : allowed) list += (list.empty() ? "" : ", ") + key;
+        fail("unknown key " + name(item.key()) + " (" + what + " has the keys " + list + ")");
+      }
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw std::invalid_argument("viscoroll-solve: " + source_ + ": " + message);
+  }
+
+  std::string name(std::string_view key) const {
+    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  }
+
+  bool has(std::string_view key) const { return object_.contains(key); }
+
+  const json& at(std::string_view key) const {
+    const auto it = object_.find(key);
+    if (it == object_.end()) fail("missing key " + name(key));
+    return *it;
+  }
+
+  std::string string(std::string_view key) const {
+    const json& value = at(key);
+    if (!value.is_string()) fail(name(key) + " must be a string, got " + type_of(value));
+    return value.get<std::string>();
+  }
+
+  /// A number that meets `ok`, else an error quoting `range` (e.g. "f >= 0 (finite)").
+  double number(std::string_view key, const std::function<bool(double)>& ok,
+                std::string_view range) const {
+    return checked_number(at(key), name(key), ok, range);
+  }
+
+  double checked_number(const json& value, const std::string& label,
+                        const std::function<bool(double)>& ok, std::string_view range) const {
+    if (!value.is_number()) fail(label + " must be a number, got " + type_of(value));
+    const double x = value.get<double>();
+    if (!std::isfinite(x) || !ok(x))
+      fail(label + " = " + shortest(x) + " is outside the valid range " + std::string(range));
+    return x;
+  }
+
+  const std::string& source() const { return source_; }
+
+ private:
+  std::string source_;
+  const json& object_;
+  std::string path_;
+};
+
+inline bool positive(double x) { return x > 0; }
+inline bool non_negative(double x) { return x >= 0; }
+inline bool poisson(double x) { return x > -1 && x <= 0.5; }
+
+struct MaterialReader {
+  std::string model;
+  std::vector<std::string> keys;  ///< besides "model"
+  std::function<MaterialModel(const ObjectReader&)> read;
+};
+
+inline const std::vector<MaterialReader>& material_readers() {
+  static const std::vector<MaterialReader> readers = {
+      {"elastic",
+       {"mu", "nu"},
+       [](const ObjectReader& r) -> MaterialModel {
+         return ElasticModel{r.number("mu", positive, "mu > 0 (Pa, finite)"),
+                             r.number("nu", poisson, "-1 < nu <= 0.5")};
+       }},
+      {"standard_linear_solid",
+       {"mu_d", "nu", "f", "tau"},
+       [](const ObjectReader& r) -> MaterialModel {
+         return StandardLinearSolidModel{r.number("mu_d", positive, "mu_d > 0 (Pa, finite)"),
+                                         r.number("nu", poisson, "-1 < nu <= 0.5"),
+                                         r.number("f", non_negative, "f >= 0 (finite)"),
+                                         r.number("tau", non_negative, "tau >= 0 (s, finite)")};
+       }},
+  };
+  return readers;
+}
+
+struct RollerReader {
+  std::string profile;
+  std::vector<std::string> keys;  ///< besides "profile"
+  std::function<RollerProfile(const ObjectReader&)> read;
+};
+
+inline const std::vector<RollerReader>& roller_readers() {
+  static const std::vector<RollerReader> readers = {
+      {"ellipsoid",
+       {"c1", "c2"},
+       [](const ObjectReader& r) -> RollerProfile {
+         return EllipsoidProfile{r.number("c1", positive, "c1 > 0 (1/m, finite)"),
+                                 r.number("c2", positive, "c2 > 0 (1/m, finite)")};
+       }},
+      {"cylinder",
+       {"radius"},
+       [](const ObjectReader& r) -> RollerProfile {
+         return CylinderProfile{r.number("radius", positive, "radius > 0 (m, finite)")};
+       }},
+  };
+  return readers;
+}
+
+/// Reads the object at `key` of `parent` with the reader its `selector` key names.
+template <class Result, class Reader>
+Result read_by_kind(const ObjectReader& parent, std::string_view key, std::string_view selector,
+                    const std::vector<Reader>& readers,
+                    std::string Reader::*kind) {
+  const json& object = parent.at(key);
+  const std::string path = parent.name(key);
+  std::string kinds;
+  for (const auto& reader : readers) kinds += (kinds.empty() ? "" : ", ") + reader.*kind;
+  // The selector first, so that an unknown key can be reported against the right kind.
+  const ObjectReader head(parent.source(), object, path,
+                          [&] {
+                            std::vector<std::string> all;
+                            for (const auto& item : object.items()) all.push_back(item.key());
+                            return all;
+                          }(),
+                          path);
+  const std::string name = head.string(selector);
+  for (const auto& reader : readers)
+    if (reader.*kind == name) {
+      std::vector<std::string> allowed = {std::string(selector)};
+      allowed.insert(allowed.end(), reader.keys.begin(), reader.keys.end());
+      const ObjectReader r(parent.source(), object, path, allowed,
+                           path + " of " + std::string(selector) + " " + name);
+      return reader.read(r);
+    }
+  head.fail(head.name(selector) + " = \"" + name + "\" is not one of " + kinds);
+}
+
+/// Rejects a key repeated within one object (nlohmann-json would keep the last).
+class DuplicateKeys {
+ public:
+  explicit DuplicateKeys(std::string source) : source_(std::move(source)) {}
+
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        keys_.emplace_back();
+        break;
+      case json::parse_event_t::object_end:
+        if (!keys_.empty()) keys_.pop_back();
+        break;
+      case json::parse_event_t::key:
+        if (!keys_.empty() && !keys_.back().insert(parsed.get<std::string>()).second)
+          throw std::invalid_argument("viscoroll-solve: " + source_ + ": duplicate key \"" +
+                                      parsed.get<std::string>() +
+                                      "\" (each key may appear once per object)");
+        break;
+      default:
+        break;
+    }
+    return true;
+  }
+
+ private:
+  std::string source_;
+  std::vector<std::set<std::string>> keys_;
+};
+
+}  // namespace scene_detail
+
+/// The scene in `text`; `source` (the file's name) starts every error message.
+inline Scene parse_scene(std::string_view text, const std::string& source) {
+  using scene_detail::json;
+  using scene_detail::ObjectReader;
+  if (text.size() > max_scene_bytes)
+    throw std::invalid_argument("viscoroll-solve: " + source + ": larger than 1 MiB (" +
+                                std::to_string(text.size()) + " bytes); not a scene file");
+  json root;
+  try {
+    root = json::parse(text.begin(), text.end(), scene_detail::DuplicateKeys(source));
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    if (const auto close = what.find("] "); what.starts_with("[json.exception.") &&
+                                            close != std::string::npos)
+      what = what.substr(close + 2);
+    throw std::invalid_argument("viscoroll-solve: " + source + ": not valid JSON: " + what);
+  }
+  const ObjectReader top(source, root, "",
+                         {"description", "material", "roller", "load", "speeds", "method", "grid"},
+                         "the scene");
+  Scene scene;
+  if (top.has("description")) scene.description = top.string("description");
+  scene.material = scene_detail::read_by_kind<MaterialModel>(
+      top, "material", "model", scene_detail::material_readers(),
+      &scene_detail::MaterialReader::model);
+  scene.roller = scene_detail::read_by_kind<RollerProfile>(
+      top, "roller", "profile", scene_detail::roller_readers(),
+      &scene_detail::RollerReader::profile);
+  scene.load = top.number("load", scene_detail::positive,
+                          "load > 0 (N; N/m for the plane method; finite)");
+  const json& speeds = top.at("speeds");
+  if (!speeds.is_array())
+    top.fail("speeds must be an array of numbers, got " + scene_detail::type_of(speeds));
+  if (speeds.empty()) top.fail("speeds is empty; give at least one speed >= 0 (m/s)");
+  for (std::size_t k = 0; k < speeds.size(); ++k)
+    scene.speeds.push_back(top.checked_number(speeds[k], "speeds[" + std::to_string(k) + "]",
+                                              scene_detail::non_negative,
+                                              "speed >= 0 (m/s, finite)"));
+  if (top.has("method")) {
+    const std::string method = top.string("method");
+    scene.method = parse_method(method);
+    if (!scene.method) top.fail("method = \"" + method + "\" is not one of plane, line, bem");
+  }
+  if (top.has("grid")) {
+    const json& grid = top.at("grid");
+    if (!grid.is_number_integer())
+      top.fail("grid must be an integer, got " + scene_detail::type_of(grid));
+    const bool ok = grid.is_number_unsigned()
+                        ? grid.get<unsigned long long>() >= 1 && grid.get<unsigned long long>() <= 512
+                        : grid.get<long long>() >= 1 && grid.get<long long>() <= 512;
+    if (!ok)
+      top.fail("grid = " + grid.dump() +
+               " is outside the valid range 1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)");
+    scene.grid = grid.get<long>();
+  }
+  return scene;
+}
+
+/// Checks what depends on the method: the cylinder is the plane method's roller only; the line
+/// method needs a slender contact (0 < c2 < 8 e^-3 c1, LineScene::validate), the bem method
+/// 1e-10 <= c2/c1 <= 1e10 (BemScene::validate); the file's grid, its method's range.
+inline void check_scene_for_method(const Scene& scene, Method method, const std::string& source) {
+  const auto fail = [&](const std::string& message) {
+    throw std::invalid_argument("viscoroll-solve: " + source + ": " + message);
+  };
+  const std::string m = method_name(method);
+  if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)
+    fail("roller.profile = \"cylinder\" suits the plane method only, not " + m +
+         " (the line and bem methods need \"ellipsoid\" with c1 and c2)");
+  if (const auto* e = std::get_if<EllipsoidProfile>(&scene.roller)) {
+    const double ratio = e->c2 / e->c1;
+    const double max_ratio = 8 * std::exp(-3.0);
+    if (method == Method::line && !(ratio < max_ratio))
+      fail("roller.c2 = " + scene_detail::shortest(e->c2) +
+           " is outside the valid range 0 < c2 < 8 e^-3 c1 = " +
+           scene_detail::shortest(max_ratio * e->c1) +
+           " for the line method (a contact longer in y than in x; the bem method has no such "
+           "limit)");
+    if (method == Method::bem && !(ratio >= 1e-10 && ratio <= 1e10))
+      fail("roller.c2 = " + scene_detail::shortest(e->c2) +
+           " is outside the valid range 1e-10 <= c2/c1 <= 1e10 for the bem method (c2/c1 = " +
+           scene_detail::shortest(ratio) + ")");
+  }
+  if (scene.grid) {
+    const long n = *scene.grid;
+    if (method == Method::line && n > 64)
+      fail("grid = " + std::to_string(n) +
+           " is outside the valid range 1 <= grid <= 64 for the line method (Chebyshev terms)");
+    if (method == Method::bem && (n < 2 || n > 512))
+      fail("grid = " + std::to_string(n) +
+           " is outside the valid range 2 <= grid <= 512 for the bem method (elements per "
+           "semi-axis)");
+  }
+}
+
+/// The text of the scene file `path`: an error if it is missing, a directory, empty or larger
+/// than max_scene_bytes.
+inline std::string read_scene_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  const auto fail = [&](const std::string& message) {
+    throw std::invalid_argument("viscoroll-solve: " + path + ": " + message);
+  };
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) fail("no such file");
+  if (fs::is_directory(status)) fail("is a directory, not a scene file");
+  if (fs::is_regular_file(status)) {
+    const auto size = fs::file_size(path, ec);
+    if (!ec && size > max_scene_bytes)
+      fail("larger than 1 MiB (" + std::to_string(size) + " bytes); not a scene file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("cannot be opened for reading");
+  std::string text(max_scene_bytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) fail("cannot be read");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > max_scene_bytes) fail("larger than 1 MiB; not a scene file");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    fail("is empty; a scene file is a JSON object (docs/cli.md)");
+  return text;
+}
+
+}  // namespace viscoroll::cli
