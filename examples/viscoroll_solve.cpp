@@ -129,7 +129,10 @@ bool in_csv(const Value& v) { return !std::holds_alternative<std::string>(v) &&
 std::string csv_header(const Record& r) {
   std::string out;
   for (const auto& [key, value] : r)
-    if (in_csv(value)) out += (out.empty() ? "" : ",") + key;
+    if (in_csv(value)) {
+      if (!out.empty()) out += ',';
+      out += key;
+    }
   return out;
 }
 
@@ -303,10 +306,10 @@ class Output {
            << "set logscale x\nset grid\nset key outside right\n"
            << "set multiplot layout 2,1 title 'viscoroll-solve --method " << method_name(method_)
            << "'\n"
-           << "set ylabel 'length (input units)'\n"
+           << "set ylabel 'length (m with a scene file)'\n"
            << "plot " << series("a0", "a(0)") << ", \\\n  " << series("b0", "b(0)");
     if (three_d()) script << ", \\\n  " << series("l", "l") << ", \\\n  " << series("d", "d");
-    script << "\nset xlabel 'speed'\nset ylabel 'chi'\n"
+    script << "\nset xlabel 'speed (m/s with a scene file)'\nset ylabel 'chi'\n"
            << "plot " << series("chi", "chi") << "\nunset multiplot\n";
     script.close();
     if (!script) {

@@ -100,7 +100,10 @@ class ObjectReader {
     for (const auto& item : object_.items())
       if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
         std::string list;
-        for (const auto& key : allowed) list += (list.empty() ? "" : ", ") + key;
+        for (const auto& key : allowed) {
+          if (!list.empty()) list += ", ";
+          list += key;
+        }
         fail("unknown key " + name(item.key()) + " (" + what + " has the keys " + list + ")");
       }
   }
@@ -127,11 +130,8 @@ class ObjectReader {
     return value.get<std::string>();
   }
 
-  /// A number that meets `ok`, else an error quoting `range` (e.g. "f >= 0 (finite)").
-  double number(std::string_view key, const std::function<bool(double)>& ok,
-                std::string_view range) const {
-    return checked_number(at(key), name(key), ok, range);
-  }
+  /// A number that meets `ok`, else an error quoting the key's range_of().
+  double number(std::string_view key, const std::function<bool(double)>& ok) const;
 
   double checked_number(const json& value, const std::string& label,
                         const std::function<bool(double)>& ok, std::string_view range) const {
@@ -150,6 +150,32 @@ class ObjectReader {
   std::string path_;
 };
 
+/// The valid range of each numeric key (the last part of its path; "speeds" for each speed), as
+/// the library's validate() states it, with the unit.
+inline std::string range_of(std::string_view key) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> ranges = {
+      {"mu", "mu > 0 (Pa, finite)"},
+      {"mu_d", "mu_d > 0 (Pa, finite)"},
+      {"nu", "-1 < nu <= 0.5"},
+      {"f", "f >= 0 (finite)"},
+      {"tau", "tau >= 0 (s, finite)"},
+      {"c1", "c1 > 0 (1/m, finite)"},
+      {"c2", "c2 > 0 (1/m, finite; line: c2 < 8 e^-3 c1)"},
+      {"radius", "radius > 0 (m, finite)"},
+      {"load", "load > 0 (N; N/m for the plane method; finite)"},
+      {"speeds", "speed >= 0 (m/s, finite)"},
+      {"grid", "1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)"},
+  };
+  for (const auto& [name, range] : ranges)
+    if (name == key) return std::string(range);
+  return "a finite number";
+}
+
+inline double ObjectReader::number(std::string_view key,
+                                   const std::function<bool(double)>& ok) const {
+  return checked_number(at(key), name(key), ok, range_of(key));
+}
+
 inline bool positive(double x) { return x > 0; }
 inline bool non_negative(double x) { return x >= 0; }
 inline bool poisson(double x) { return x > -1 && x <= 0.5; }
@@ -165,16 +191,16 @@ inline const std::vector<MaterialReader>& material_readers() {
       {"elastic",
        {"mu", "nu"},
        [](const ObjectReader& r) -> MaterialModel {
-         return ElasticModel{r.number("mu", positive, "mu > 0 (Pa, finite)"),
-                             r.number("nu", poisson, "-1 < nu <= 0.5")};
+         return ElasticModel{r.number("mu", positive),
+                             r.number("nu", poisson)};
        }},
       {"standard_linear_solid",
        {"mu_d", "nu", "f", "tau"},
        [](const ObjectReader& r) -> MaterialModel {
-         return StandardLinearSolidModel{r.number("mu_d", positive, "mu_d > 0 (Pa, finite)"),
-                                         r.number("nu", poisson, "-1 < nu <= 0.5"),
-                                         r.number("f", non_negative, "f >= 0 (finite)"),
-                                         r.number("tau", non_negative, "tau >= 0 (s, finite)")};
+         return StandardLinearSolidModel{r.number("mu_d", positive),
+                                         r.number("nu", poisson),
+                                         r.number("f", non_negative),
+                                         r.number("tau", non_negative)};
        }},
   };
   return readers;
@@ -191,13 +217,13 @@ inline const std::vector<RollerReader>& roller_readers() {
       {"ellipsoid",
        {"c1", "c2"},
        [](const ObjectReader& r) -> RollerProfile {
-         return EllipsoidProfile{r.number("c1", positive, "c1 > 0 (1/m, finite)"),
-                                 r.number("c2", positive, "c2 > 0 (1/m, finite)")};
+         return EllipsoidProfile{r.number("c1", positive),
+                                 r.number("c2", positive)};
        }},
       {"cylinder",
        {"radius"},
        [](const ObjectReader& r) -> RollerProfile {
-         return CylinderProfile{r.number("radius", positive, "radius > 0 (m, finite)")};
+         return CylinderProfile{r.number("radius", positive)};
        }},
   };
   return readers;
@@ -211,7 +237,10 @@ Result read_by_kind(const ObjectReader& parent, std::string_view key, std::strin
   const json& object = parent.at(key);
   const std::string path = parent.name(key);
   std::string kinds;
-  for (const auto& reader : readers) kinds += (kinds.empty() ? "" : ", ") + reader.*kind;
+  for (const auto& reader : readers) {
+    if (!kinds.empty()) kinds += ", ";
+    kinds += reader.*kind;
+  }
   // The selector first, so that an unknown key can be reported against the right kind.
   const ObjectReader head(parent.source(), object, path,
                           [&] {
@@ -232,34 +261,73 @@ Result read_by_kind(const ObjectReader& parent, std::string_view key, std::strin
   head.fail(head.name(selector) + " = \"" + name + "\" is not one of " + kinds);
 }
 
-/// Rejects a key repeated within one object (nlohmann-json would keep the last).
-class DuplicateKeys {
+/// Follows the parser through the document: rejects a key repeated within one object
+/// (nlohmann-json would keep the last) and knows the path of the value being read, for the
+/// parser's own errors (a number that overflows a double).
+class PathTracker {
  public:
-  explicit DuplicateKeys(std::string source) : source_(std::move(source)) {}
+  explicit PathTracker(std::string source) : source_(std::move(source)) {}
 
   bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
     switch (event) {
       case json::parse_event_t::object_start:
-        keys_.emplace_back();
+      case json::parse_event_t::array_start:
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+        frames_.push_back({event == json::parse_event_t::array_start, {}, {}, -1});
         break;
       case json::parse_event_t::object_end:
-        if (!keys_.empty()) keys_.pop_back();
+      case json::parse_event_t::array_end:
+        if (!frames_.empty()) frames_.pop_back();
         break;
       case json::parse_event_t::key:
-        if (!keys_.empty() && !keys_.back().insert(parsed.get<std::string>()).second)
-          throw std::invalid_argument("viscoroll-solve: " + source_ + ": duplicate key \"" +
-                                      parsed.get<std::string>() +
-                                      "\" (each key may appear once per object)");
+        if (!frames_.empty()) {
+          frames_.back().key = parsed.get<std::string>();
+          if (!frames_.back().keys.insert(frames_.back().key).second)
+            throw std::invalid_argument("viscoroll-solve: " + source_ + ": duplicate key " +
+                                        path() + " (each key may appear once per object)");
+        }
         break;
-      default:
+      case json::parse_event_t::value:
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
         break;
     }
     return true;
   }
 
+  /// The path of the value being read ("material.f", "speeds[2]").
+  std::string path(bool next_element = false) const {
+    std::string out;
+    for (std::size_t k = 0; k < frames_.size(); ++k) {
+      const Frame& f = frames_[k];
+      if (f.array) {
+        const long index = f.index + (next_element && k + 1 == frames_.size() ? 1 : 0);
+        out += '[';
+        out += std::to_string(index < 0 ? 0 : index);
+        out += ']';
+      } else {
+        if (!out.empty()) out += '.';
+        out += f.key;
+      }
+    }
+    return out;
+  }
+
+  /// The last part of path(): the key, or the array's key for an element.
+  std::string key() const {
+    for (auto f = frames_.rbegin(); f != frames_.rend(); ++f)
+      if (!f->array) return f->key;
+    return "";
+  }
+
  private:
+  struct Frame {
+    bool array;
+    std::set<std::string> keys;
+    std::string key;
+    long index;
+  };
   std::string source_;
-  std::vector<std::set<std::string>> keys_;
+  std::vector<Frame> frames_;
 };
 
 }  // namespace scene_detail
@@ -272,14 +340,34 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
     throw std::invalid_argument("viscoroll-solve: " + source + ": larger than 1 MiB (" +
                                 std::to_string(text.size()) + " bytes); not a scene file");
   json root;
+  scene_detail::PathTracker tracker(source);
+  const auto message = [](const json::exception& e) {
+    const std::string what = e.what();
+    const auto close = what.find("] ");
+    return what.starts_with("[json.exception.") && close != std::string::npos
+               ? what.substr(close + 2)
+               : what;
+  };
   try {
-    root = json::parse(text.begin(), text.end(), scene_detail::DuplicateKeys(source));
+    root = json::parse(text.begin(), text.end(),
+                       [&tracker](int depth, json::parse_event_t event, json& parsed) {
+                         return tracker(depth, event, parsed);
+                       });
   } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    if (const auto close = what.find("] "); what.starts_with("[json.exception.") &&
-                                            close != std::string::npos)
-      what = what.substr(close + 2);
-    throw std::invalid_argument("viscoroll-solve: " + source + ": not valid JSON: " + what);
+    throw std::invalid_argument("viscoroll-solve: " + source + ": not valid JSON: " + message(e));
+  } catch (const json::out_of_range& e) {
+    // A number beyond the range of a double (1e999): the parser stops at it.
+    std::string what = message(e), literal = "?";
+    if (const auto open = what.find('\''), close = what.rfind('\'');
+        open != std::string::npos && close > open)
+      literal = what.substr(open + 1, close - open - 1);
+    const std::string where = tracker.path(true);
+    throw std::invalid_argument("viscoroll-solve: " + source + ": " +
+                                (where.empty() ? std::string("the scene") : where) + " = " +
+                                literal + " is outside the valid range " +
+                                scene_detail::range_of(tracker.key()) + " (" + what + ")");
+  } catch (const json::exception& e) {
+    throw std::invalid_argument("viscoroll-solve: " + source + ": not valid JSON: " + message(e));
   }
   const ObjectReader top(source, root, "",
                          {"description", "material", "roller", "load", "speeds", "method", "grid"},
@@ -292,8 +380,7 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   scene.roller = scene_detail::read_by_kind<RollerProfile>(
       top, "roller", "profile", scene_detail::roller_readers(),
       &scene_detail::RollerReader::profile);
-  scene.load = top.number("load", scene_detail::positive,
-                          "load > 0 (N; N/m for the plane method; finite)");
+  scene.load = top.number("load", scene_detail::positive);
   const json& speeds = top.at("speeds");
   if (!speeds.is_array())
     top.fail("speeds must be an array of numbers, got " + scene_detail::type_of(speeds));
@@ -301,7 +388,7 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   for (std::size_t k = 0; k < speeds.size(); ++k)
     scene.speeds.push_back(top.checked_number(speeds[k], "speeds[" + std::to_string(k) + "]",
                                               scene_detail::non_negative,
-                                              "speed >= 0 (m/s, finite)"));
+                                              scene_detail::range_of("speeds")));
   if (top.has("method")) {
     const std::string method = top.string("method");
     scene.method = parse_method(method);
@@ -315,8 +402,8 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
                         ? grid.get<unsigned long long>() >= 1 && grid.get<unsigned long long>() <= 512
                         : grid.get<long long>() >= 1 && grid.get<long long>() <= 512;
     if (!ok)
-      top.fail("grid = " + grid.dump() +
-               " is outside the valid range 1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)");
+      top.fail("grid = " + grid.dump() + " is outside the valid range " +
+               scene_detail::range_of("grid"));
     scene.grid = grid.get<long>();
   }
   return scene;

@@ -1,0 +1,137 @@
+// viscoroll-solve's other outputs: --csv writes a CSV whose rows are the JSON lines' numbers and
+// booleans; --format table prints a header and one row per speed; --plot writes sweep.csv and,
+// with gnuplot on PATH, sweep.png.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_run.hpp"
+
+namespace {
+
+using namespace viscoroll::cli_test;
+
+std::vector<std::string> split(const std::string& line, char separator) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, separator)) out.push_back(cell);
+  if (!line.empty() && line.back() == separator) out.emplace_back();
+  return out;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) out.push_back(line);
+  return out;
+}
+
+/// The CSV `text` matches the JSON lines `json`: the header is their number and boolean fields
+/// in order, and each cell is the field's value (empty for null).
+void check_csv_matches(const std::string& text, const std::vector<nlohmann::ordered_json>& json) {
+  const auto rows = lines_of(text);
+  REQUIRE(rows.size() == json.size() + 1);
+  const auto header = split(rows[0], ',');
+  std::vector<std::string> expected;
+  for (const auto& [key, value] : json[0].items())
+    if (value.is_number() || value.is_boolean() || value.is_null()) expected.push_back(key);
+  CHECK(header == expected);
+  for (std::size_t k = 0; k < json.size(); ++k) {
+    const auto cells = split(rows[k + 1], ',');
+    REQUIRE(cells.size() == header.size());
+    for (std::size_t c = 0; c < header.size(); ++c) {
+      const auto& value = json[k][header[c]];
+      INFO("row " << k << ", " << header[c] << " = " << cells[c]);
+      if (value.is_null())
+        CHECK(cells[c].empty());
+      else if (value.is_boolean())
+        CHECK(cells[c] == (value.get<bool>() ? "true" : "false"));
+      else
+        CHECK(std::strtod(cells[c].c_str(), nullptr) == value.get<double>());
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("cli: --csv writes the sweep as CSV matching the JSON lines", "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  const TempDir dir("viscoroll_cli_csv");
+  for (const char* scene : {"rubber_roller.json", "polyamide_cylinder.json"}) {
+    const std::string csv = (dir.path() / "sweep.csv").string();
+    const Run r = run({"--scene", (scenes_dir() / scene).string(), "--csv", csv});
+    INFO(scene << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.status == 0);
+    const auto json = json_lines(r.out);
+    REQUIRE(!json.empty());
+    check_csv_matches(slurp(csv), json);
+  }
+  const Run bad = run({"--scene", (scenes_dir() / "paper.json").string(), "--csv",
+                       (dir.path() / "no" / "such" / "dir.csv").string()});
+  CHECK(bad.status == 2);
+  CHECK(bad.out.empty());
+  CHECK(bad.err.find("--csv") != std::string::npos);
+}
+
+TEST_CASE("cli: --format table prints a header and a row per speed", "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  struct Case {
+    std::string scene, method, header;
+  };
+  const std::vector<Case> cases = {
+      {"rubber_roller.json", "line", "tau speed Vtau/a_lt a0 b0 l d chi converged"},
+      {"rubber_ball.json", "bem", "tau speed Vtau/a_lt a0 b0 l d chi converged"},
+      {"polyamide_cylinder.json", "plane", "tau speed Vtau/a_lt a0 b0 chi converged"},
+  };
+  for (const auto& c : cases) {
+    const Run json = run({"--scene", (scenes_dir() / c.scene).string(), "--method", c.method});
+    const Run table = run({"--scene", (scenes_dir() / c.scene).string(), "--method", c.method,
+                           "--format", "table"});
+    INFO(c.scene << "\n" << table.out << "\nstderr: " << table.err);
+    CHECK(table.status == 0);
+    const auto values = json_lines(json.out);
+    const auto rows = lines_of(table.out);
+    REQUIRE(rows.size() == values.size() + 1);
+    std::istringstream words(rows[0]);
+    std::string word, header;
+    while (words >> word) {
+      if (!header.empty()) header += ' ';
+      header += word;
+    }
+    CHECK(header == c.header);
+    const auto columns = split(c.header, ' ');
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      std::istringstream cells(rows[k + 1]);
+      std::vector<std::string> row;
+      while (cells >> word) row.push_back(word);
+      REQUIRE(row.size() == columns.size());
+      CHECK(std::strtod(row[1].c_str(), nullptr) == Approx(values[k]["speed"].get<double>()));
+      CHECK(std::strtod(row[3].c_str(), nullptr) ==
+            Approx(values[k]["a0"].get<double>()).epsilon(1e-6));
+      CHECK(row.back() == (values[k]["converged"].get<bool>() ? "yes" : "no"));
+    }
+  }
+}
+
+TEST_CASE("cli: --plot writes sweep.csv and, with gnuplot, sweep.png", "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  const TempDir dir("viscoroll_cli_plot");
+  const fs::path out = dir.path() / "plot";
+  const Run r = run({"--scene", (scenes_dir() / "rubber_ball.json").string(), "--plot",
+                     out.string()});
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("--plot needs gnuplot on PATH") != std::string::npos);
+    return;
+  }
+  CHECK(r.status == 0);
+  check_csv_matches(slurp(out / "sweep.csv"), json_lines(r.out));
+  CHECK(fs::exists(out / "sweep.png"));
+  CHECK(fs::file_size(out / "sweep.png") > 1000);
+}

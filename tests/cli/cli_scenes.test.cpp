@@ -1,0 +1,135 @@
+// Every shipped scene (examples/scenes) runs through the built viscoroll-solve with each method it
+// suits, exits 0 with one valid JSON line per speed, and the same scene given as options prints
+// identical numbers (every field but `seconds`, over the whole sweep).
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/scene_file.hpp"
+#include "cli_run.hpp"
+
+namespace {
+
+using namespace viscoroll::cli_test;
+namespace cli = viscoroll::cli;
+
+/// The scene file's material, roller and load as options (the speeds as a list).
+std::vector<std::string> as_options(const cli::Scene& s, const std::string& method) {
+  std::vector<std::string> args = {"--method", method};
+  if (const auto* m = std::get_if<cli::StandardLinearSolidModel>(&s.material)) {
+    args.insert(args.end(), {"--mu-d", exact(m->mu_d), "--nu", exact(m->nu), "--f", exact(m->f),
+                             "--tau", exact(m->tau)});
+  } else {
+    const auto& e = std::get<cli::ElasticModel>(s.material);
+    args.insert(args.end(),
+                {"--mu-d", exact(e.mu), "--nu", exact(e.nu), "--f", "0", "--tau", "0"});
+  }
+  if (const auto* r = std::get_if<cli::EllipsoidProfile>(&s.roller)) {
+    args.insert(args.end(), {"--c1", exact(r->c1), "--c2", exact(r->c2)});
+  } else {
+    args.insert(args.end(), {"--c1", exact(1 / std::get<cli::CylinderProfile>(s.roller).radius)});
+  }
+  std::string speeds;
+  for (double v : s.speeds) {
+    if (!speeds.empty()) speeds += ',';
+    speeds += exact(v);
+  }
+  args.insert(args.end(), {"--load", exact(s.load), "--speed", speeds});
+  if (s.grid) args.insert(args.end(), {"--grid", std::to_string(*s.grid)});
+  return args;
+}
+
+}  // namespace
+
+TEST_CASE("cli: every shipped scene runs with each method it suits, as a file and as options",
+          "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  struct Case {
+    std::string file, method;
+  };
+  const std::vector<Case> cases = {{"paper.json", "line"},         {"paper.json", "bem"},
+                                   {"polyamide_cylinder.json", "plane"},
+                                   {"rubber_roller.json", "line"}, {"rubber_roller.json", "bem"},
+                                   {"rubber_ball.json", "bem"}};
+  for (const auto& c : cases) {
+    const std::string path = (scenes_dir() / c.file).string();
+    const cli::Scene scene = cli::parse_scene(cli::read_scene_file(path), path);
+    const Run file = run({"--scene", path, "--method", c.method});
+    INFO(c.file << " --method " << c.method << "\nstdout: " << file.out
+                << "\nstderr: " << file.err);
+    CHECK(file.status == 0);
+    const auto lines = json_lines(file.out);
+    REQUIRE(lines.size() == scene.speeds.size());
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      CHECK(lines[k]["method"] == c.method);
+      CHECK(lines[k]["speed"].get<double>() == scene.speeds[k]);
+      CHECK(lines[k]["converged"] == true);
+      for (const char* key : {"a0", "b0", "chi", "a_long_term"})
+        CHECK(lines[k][key].is_number());
+      if (c.method != "plane") {
+        CHECK(lines[k]["y_minus"].get<double>() == -lines[k]["l"].get<double>());
+        CHECK(lines[k]["y_plus"].get<double>() == lines[k]["l"].get<double>());
+      } else {
+        CHECK(!lines[k].contains("y_plus"));
+      }
+    }
+    const Run options = run(as_options(scene, c.method));
+    INFO("as options, stdout: " << options.out << "\nstderr: " << options.err);
+    CHECK(options.status == 0);
+    CHECK(options.err == file.err);
+    auto same = json_lines(options.out);
+    REQUIRE(same.size() == lines.size());
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      auto a = lines[k], b = same[k];
+      a.erase("seconds");
+      b.erase("seconds");
+      CHECK(a == b);
+    }
+  }
+}
+
+TEST_CASE("cli: a scene that does not suit the method exits 2 naming the key", "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  struct Case {
+    std::string file, method, message;
+  };
+  const std::vector<Case> cases = {
+      {"rubber_ball.json", "line", "roller.c2 = 40 is outside the valid range 0 < c2 < 8 e^-3 c1"},
+      {"polyamide_cylinder.json", "line", "roller.profile = \"cylinder\" suits the plane method"},
+      {"polyamide_cylinder.json", "bem", "roller.profile = \"cylinder\" suits the plane method"},
+  };
+  for (const auto& c : cases) {
+    const Run r = run({"--scene", (scenes_dir() / c.file).string(), "--method", c.method});
+    INFO(c.file << " --method " << c.method << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(c.message) != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: a sweep solves each speed of each tau in order; --speed overrides the scene's",
+          "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  const Run r = run({"--method", "line", "--mu-d", "1", "--nu", "0.5", "--f", "9", "--tau",
+                     "1,2", "--speed", "0.5,1,2", "--c1", "1", "--c2", "0.0798291", "--load",
+                     "5.3", "--grid", "4"});
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  CHECK(r.status == 0);
+  const auto lines = json_lines(r.out);
+  REQUIRE(lines.size() == 6);
+  const double tau[] = {1, 1, 1, 2, 2, 2}, speed[] = {0.5, 1, 2, 0.5, 1, 2};
+  for (std::size_t k = 0; k < 6; ++k) {
+    CHECK(lines[k]["tau"].get<double>() == tau[k]);
+    CHECK(lines[k]["speed"].get<double>() == speed[k]);
+    CHECK(lines[k]["vtau"].get<double>() == tau[k] * speed[k]);
+  }
+  const Run one = run({"--scene", (scenes_dir() / "rubber_roller.json").string(), "--speed",
+                       "0.7,0.07", "--grid", "4"});
+  INFO("stdout: " << one.out << "\nstderr: " << one.err);
+  CHECK(one.status == 0);
+  const auto sweep = json_lines(one.out);
+  REQUIRE(sweep.size() == 2);
+  CHECK(sweep[0]["speed"].get<double>() == 0.7);
+  CHECK(sweep[1]["speed"].get<double>() == 0.07);
+  CHECK(sweep[0]["terms"] == 4);
+}
