@@ -1,0 +1,122 @@
+// Tests of viscoroll/sweep.hpp: a sweep returns, in the order of the speeds, what the serial
+// continuation it describes returns (each chunk from a cold start, each later speed seeded with
+// the previous converged, iterated solution of its chunk), bit for bit and whatever the thread
+// count; a solver without seeds (plane) is solved speed by speed; an invalid speed is rethrown
+// with the library's message; the options validate themselves.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+#include <viscoroll/plane/plane_solver.hpp>
+#include <viscoroll/sweep.hpp>
+
+#include "support/paper_scene.hpp"
+
+namespace {
+
+using viscoroll::SweepOptions;
+
+/// Bitwise equality of two doubles (NaN equal to the same NaN).
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+std::vector<double> log_speeds(double lo, double hi, int n) {
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(lo * std::pow(hi / lo, double(i) / (n - 1)));
+  return v;
+}
+
+void require_same(const viscoroll::LineSolverD::Solution& x,
+                  const viscoroll::LineSolverD::Solution& y) {
+  REQUIRE(x.converged == y.converged);
+  REQUIRE(x.iterations == y.iterations);
+  REQUIRE(same_bits(x.a(0.0), y.a(0.0)));
+  REQUIRE(same_bits(x.b(0.0), y.b(0.0)));
+  REQUIRE(same_bits(x.l(), y.l()));
+  REQUIRE(same_bits(x.d, y.d));
+  REQUIRE(same_bits(x.chi, y.chi));
+}
+
+}  // namespace
+
+TEST_CASE("sweep: the line solver's chunked continuation, bit for bit for any thread count",
+          "[sweep]") {
+  const viscoroll::testing::PaperScene paper;
+  viscoroll::LineOptions line_options;
+  line_options.terms = 3;
+  const viscoroll::LineSolverD solver(paper.material, line_options);
+  const std::vector<double> speeds = log_speeds(0.05, 20, 10);  // tau = 1: V tau/a0 = speed
+
+  // The serial continuation the sweep promises, written out: chunks of 4 (4, 4, 2 speeds).
+  std::vector<viscoroll::LineSolverD::Solution> expected;
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const viscoroll::LineSolverD::Solution* seed = nullptr;
+    if (i % 4 != 0 && expected.back().converged && expected.back().iterations > 0)
+      seed = &expected.back();
+    expected.push_back(solver.solve(paper.scene(speeds[i]), seed));
+  }
+
+  for (unsigned threads : {1u, 2u, 3u}) {
+    SweepOptions options;
+    options.chunk = 4;
+    options.threads = threads;
+    std::size_t calls = 0, last_total = 0;
+    options.progress = [&](std::size_t done, std::size_t total) {
+      ++calls;
+      REQUIRE(done == calls);  // one call at a time, counting up
+      last_total = total;
+    };
+    const auto got = viscoroll::sweep(solver, paper.scene(0), speeds, options);
+    REQUIRE(got.size() == speeds.size());
+    REQUIRE(calls == speeds.size());
+    REQUIRE(last_total == speeds.size());
+    for (std::size_t i = 0; i < speeds.size(); ++i) {
+      INFO("threads " << threads << ", speed " << speeds[i]);
+      REQUIRE(got[i].converged);
+      require_same(got[i], expected[i]);
+    }
+  }
+}
+
+TEST_CASE("sweep: a solver without seeds is solved speed by speed", "[sweep]") {
+  const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, 1));
+  const viscoroll::PlaneScene<double> scene{1, 1, 0};
+  const std::vector<double> speeds = log_speeds(0.01, 100, 7);
+  SweepOptions options;
+  options.chunk = 2;
+  options.threads = 2;
+  const auto got = viscoroll::sweep(solver, scene, speeds, options);
+  REQUIRE(got.size() == speeds.size());
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const auto one = solver.solve({1, 1, speeds[i]});
+    REQUIRE(same_bits(got[i].a, one.a));
+    REQUIRE(same_bits(got[i].b, one.b));
+    REQUIRE(same_bits(got[i].chi, one.chi));
+  }
+}
+
+TEST_CASE("sweep: an invalid speed is rethrown with the library's message", "[sweep]") {
+  const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, 1));
+  const std::vector<double> speeds{1, 2, -3, 4, 5};
+  SweepOptions options;
+  options.chunk = 1;
+  options.threads = 2;
+  REQUIRE_THROWS_WITH(viscoroll::sweep(solver, viscoroll::PlaneScene<double>{1, 1, 0}, speeds,
+                                       options),
+                      Catch::Contains("speed = -3"));
+}
+
+TEST_CASE("sweep: options name the setting and its range", "[sweep]") {
+  SweepOptions options;
+  options.chunk = 0;
+  REQUIRE_THROWS_WITH(options.validate(), Catch::Contains("chunk") && Catch::Contains("1 <= chunk"));
+  options.chunk = 1;
+  options.threads = 5000;
+  REQUIRE_THROWS_WITH(options.validate(), Catch::Contains("threads"));
+  options.threads = 0;
+  REQUIRE(options.effective_threads(1) == 1);  // never more threads than chunks
+  REQUIRE(options.effective_threads(0) == 1);
+  const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, 1));
+  REQUIRE(viscoroll::sweep(solver, viscoroll::PlaneScene<double>{1, 1, 0}, std::vector<double>{})
+              .empty());
+}
