@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build        # toolchain (cmake >= 3.25 for CMakePresets.json v6)
   libeigen3-dev libboost-dev   # the library's dependencies
+  nlohmann-json3-dev           # viscoroll-solve's scene files (the command-line tool only)
   catch2 libbenchmark-dev      # tests, benchmarks
   gnuplot-nox                  # figures
   libfftw3-dev                 # optional FFT back end

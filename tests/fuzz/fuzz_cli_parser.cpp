@@ -1,23 +1,73 @@
-// libFuzzer target over viscoroll-solve's command-line parser (issue 6). The input bytes are split
-// at NUL and newline into arguments. Every input must either parse or throw
-// std::invalid_argument with a message that names viscoroll-solve; any other exception, crash,
-// sanitizer report or hang is a finding. Parsed options are then validated the way the program
-// does (materials and scene), which must likewise throw only std::invalid_argument.
+// libFuzzer target over viscoroll-solve's command-line parser and scene-file reader (issues 6 and
+// 19). An input whose first byte is '{' is a scene file's text, read by parse_scene; any other
+// input is split at NUL and newline into arguments for parse_solve_options. Every input must
+// either parse or throw std::invalid_argument with a message that names viscoroll-solve (or the
+// library); any other exception, crash, sanitizer report or hang is a finding. What parses is then
+// checked the way the program does (method, materials, scene), which must likewise throw only
+// std::invalid_argument, and a parsed scene must hold only finite values in range.
 // Build and run: scripts/fuzz.sh [seconds]
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
+#include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+#include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+namespace {
+
+void require(bool ok) {
+  if (!ok) std::abort();
+}
+
+/// A parsed scene holds what the reader promised, and the program's checks throw only
+/// std::invalid_argument.
+void check_scene(const viscoroll::cli::Scene& s) {
+  using namespace viscoroll::cli;
+  require(std::isfinite(s.load) && s.load > 0);
+  require(!s.speeds.empty());
+  for (double v : s.speeds) require(std::isfinite(v) && v >= 0);
+  require(!s.grid || (*s.grid >= 1 && *s.grid <= 512));
+  double c1 = 0;
+  if (const auto* e = std::get_if<EllipsoidProfile>(&s.roller)) {
+    require(std::isfinite(e->c1) && e->c1 > 0 && std::isfinite(e->c2) && e->c2 > 0);
+    c1 = e->c1;
+  } else {
+    const double radius = std::get<CylinderProfile>(s.roller).radius;
+    require(std::isfinite(radius) && radius > 0);
+    c1 = 1 / radius;
+  }
+  if (const auto* m = std::get_if<ElasticModel>(&s.material))
+    (void)viscoroll::Elastic<double>(m->mu, m->nu);
+  else {
+    const auto& sls = std::get<StandardLinearSolidModel>(s.material);
+    (void)viscoroll::StandardLinearSolid<double>(sls.mu_d, sls.nu, sls.f, sls.tau);
+  }
+  for (double v : s.speeds) {
+    try {
+      viscoroll::PlaneScene<double>{c1, s.load, v}.validate();
+    } catch (const std::invalid_argument&) {
+      require(!std::isfinite(c1));  // 1/radius overflowed: the library says so
+    }
+  }
+  for (const Method m : {Method::plane, Method::line, Method::bem}) {
+    try {
+      check_scene_for_method(s, m, "fuzz.json");
+    } catch (const std::invalid_argument& e) {
+      require(std::string_view(e.what()).starts_with("viscoroll-solve: fuzz.json: "));
+    }
+  }
+}
+
+void run_options(const std::string& text) {
   std::vector<std::string> storage;
   std::string current;
   for (char ch : text) {
@@ -30,11 +80,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   storage.push_back(current);
   const std::vector<std::string_view> args(storage.begin(), storage.end());
-  try {
-    const auto o = viscoroll::cli::parse_solve_options(args);
-    const viscoroll::PlaneScene<double> scene{o.c1, o.load, o.speed};
+  const auto o = viscoroll::cli::parse_solve_options(args);
+  if (!o.scene.empty()) return;  // the file system is not the fuzzer's to read
+  require(o.method.has_value());
+  require(!o.tau.empty() && !o.speeds.empty());
+  for (double speed : o.speeds) {
+    const viscoroll::PlaneScene<double> scene{o.c1, o.load, speed};
     scene.validate();
-    for (double tau : o.tau) (void)viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau);
+  }
+  for (double tau : o.tau) (void)viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    if (!text.empty() && text[0] == '{')
+      check_scene(viscoroll::cli::parse_scene(text, "fuzz.json"));
+    else
+      run_options(text);
   } catch (const std::invalid_argument& e) {
     const std::string_view what = e.what();
     if (!what.starts_with("viscoroll")) std::abort();  // every message names its source
