@@ -123,8 +123,10 @@ std::string json_line(const Record& r) {
   return out + "}";
 }
 
-bool in_csv(const Value& v) { return !std::holds_alternative<std::string>(v) &&
-                                     !std::holds_alternative<std::vector<std::string>>(v); }
+bool in_csv(const Value& v) {
+  return !std::holds_alternative<std::string>(v) &&
+         !std::holds_alternative<std::vector<std::string>>(v);
+}
 
 std::string csv_header(const Record& r) {
   std::string out;

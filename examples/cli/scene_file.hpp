@@ -191,14 +191,12 @@ inline const std::vector<MaterialReader>& material_readers() {
       {"elastic",
        {"mu", "nu"},
        [](const ObjectReader& r) -> MaterialModel {
-         return ElasticModel{r.number("mu", positive),
-                             r.number("nu", poisson)};
+         return ElasticModel{r.number("mu", positive), r.number("nu", poisson)};
        }},
       {"standard_linear_solid",
        {"mu_d", "nu", "f", "tau"},
        [](const ObjectReader& r) -> MaterialModel {
-         return StandardLinearSolidModel{r.number("mu_d", positive),
-                                         r.number("nu", poisson),
+         return StandardLinearSolidModel{r.number("mu_d", positive), r.number("nu", poisson),
                                          r.number("f", non_negative),
                                          r.number("tau", non_negative)};
        }},
@@ -217,8 +215,7 @@ inline const std::vector<RollerReader>& roller_readers() {
       {"ellipsoid",
        {"c1", "c2"},
        [](const ObjectReader& r) -> RollerProfile {
-         return EllipsoidProfile{r.number("c1", positive),
-                                 r.number("c2", positive)};
+         return EllipsoidProfile{r.number("c1", positive), r.number("c2", positive)};
        }},
       {"cylinder",
        {"radius"},
@@ -232,8 +229,7 @@ inline const std::vector<RollerReader>& roller_readers() {
 /// Reads the object at `key` of `parent` with the reader its `selector` key names.
 template <class Result, class Reader>
 Result read_by_kind(const ObjectReader& parent, std::string_view key, std::string_view selector,
-                    const std::vector<Reader>& readers,
-                    std::string Reader::*kind) {
+                    const std::vector<Reader>& readers, std::string Reader::*kind) {
   const json& object = parent.at(key);
   const std::string path = parent.name(key);
   std::string kinds;
@@ -242,13 +238,14 @@ Result read_by_kind(const ObjectReader& parent, std::string_view key, std::strin
     kinds += reader.*kind;
   }
   // The selector first, so that an unknown key can be reported against the right kind.
-  const ObjectReader head(parent.source(), object, path,
-                          [&] {
-                            std::vector<std::string> all;
-                            for (const auto& item : object.items()) all.push_back(item.key());
-                            return all;
-                          }(),
-                          path);
+  const ObjectReader head(
+      parent.source(), object, path,
+      [&] {
+        std::vector<std::string> all;
+        for (const auto& item : object.items()) all.push_back(item.key());
+        return all;
+      }(),
+      path);
   const std::string name = head.string(selector);
   for (const auto& reader : readers)
     if (reader.*kind == name) {
@@ -374,12 +371,12 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
                          "the scene");
   Scene scene;
   if (top.has("description")) scene.description = top.string("description");
-  scene.material = scene_detail::read_by_kind<MaterialModel>(
-      top, "material", "model", scene_detail::material_readers(),
-      &scene_detail::MaterialReader::model);
-  scene.roller = scene_detail::read_by_kind<RollerProfile>(
-      top, "roller", "profile", scene_detail::roller_readers(),
-      &scene_detail::RollerReader::profile);
+  scene.material = scene_detail::read_by_kind<MaterialModel>(top, "material", "model",
+                                                             scene_detail::material_readers(),
+                                                             &scene_detail::MaterialReader::model);
+  scene.roller = scene_detail::read_by_kind<RollerProfile>(top, "roller", "profile",
+                                                           scene_detail::roller_readers(),
+                                                           &scene_detail::RollerReader::profile);
   scene.load = top.number("load", scene_detail::positive);
   const json& speeds = top.at("speeds");
   if (!speeds.is_array())
@@ -398,9 +395,10 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
     const json& grid = top.at("grid");
     if (!grid.is_number_integer())
       top.fail("grid must be an integer, got " + scene_detail::type_of(grid));
-    const bool ok = grid.is_number_unsigned()
-                        ? grid.get<unsigned long long>() >= 1 && grid.get<unsigned long long>() <= 512
-                        : grid.get<long long>() >= 1 && grid.get<long long>() <= 512;
+    const bool ok =
+        grid.is_number_unsigned()
+            ? grid.get<unsigned long long>() >= 1 && grid.get<unsigned long long>() <= 512
+            : grid.get<long long>() >= 1 && grid.get<long long>() <= 512;
     if (!ok)
       top.fail("grid = " + grid.dump() + " is outside the valid range " +
                scene_detail::range_of("grid"));

@@ -89,8 +89,8 @@ inline std::vector<double> parse_numbers(std::string_view option, std::string_vi
 /// which names the parameter.
 inline SolveOptions parse_solve_options(const std::vector<std::string_view>& args) {
   static const std::set<std::string_view> known = {
-      "--method", "--mu-d", "--nu",   "--f",      "--tau", "--speed", "--c1",
-      "--c2",     "--load", "--grid", "--scene", "--format", "--csv", "--plot"};
+      "--method", "--mu-d", "--nu",   "--f",     "--tau",    "--speed", "--c1",
+      "--c2",     "--load", "--grid", "--scene", "--format", "--csv",   "--plot"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};

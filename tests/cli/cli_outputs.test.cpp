@@ -89,8 +89,8 @@ TEST_CASE("cli: --format table prints a header and a row per speed", "[cli][scen
   };
   for (const auto& c : cases) {
     const Run json = run({"--scene", (scenes_dir() / c.scene).string(), "--method", c.method});
-    const Run table = run({"--scene", (scenes_dir() / c.scene).string(), "--method", c.method,
-                           "--format", "table"});
+    const Run table = run(
+        {"--scene", (scenes_dir() / c.scene).string(), "--method", c.method, "--format", "table"});
     INFO(c.scene << "\n" << table.out << "\nstderr: " << table.err);
     CHECK(table.status == 0);
     const auto values = json_lines(json.out);
@@ -121,8 +121,8 @@ TEST_CASE("cli: --plot writes sweep.csv and, with gnuplot, sweep.png", "[cli][sc
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   const TempDir dir("viscoroll_cli_plot");
   const fs::path out = dir.path() / "plot";
-  const Run r = run({"--scene", (scenes_dir() / "rubber_ball.json").string(), "--plot",
-                     out.string()});
+  const Run r =
+      run({"--scene", (scenes_dir() / "rubber_ball.json").string(), "--plot", out.string()});
   INFO("stdout: " << r.out << "\nstderr: " << r.err);
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
     CHECK(r.status == 2);

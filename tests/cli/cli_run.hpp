@@ -107,12 +107,13 @@ inline std::string exact(double x) {
 }  // namespace viscoroll::cli_test
 
 /// Skips the test (with a warning) where viscoroll-solve was not built.
-#define VISCOROLL_REQUIRE_SOLVE_PROGRAM()                                                      \
-  do {                                                                                         \
-    const auto program_ = viscoroll::cli_test::solve_program();                                \
-    if (program_.empty() || !std::filesystem::exists(program_)) {                              \
-      WARN("viscoroll-solve not built (" << program_ << "); build viscoroll_solve to run this " \
-                                                        "test");                               \
-      return;                                                                                  \
-    }                                                                                          \
+#define VISCOROLL_REQUIRE_SOLVE_PROGRAM()                                           \
+  do {                                                                              \
+    const auto program_ = viscoroll::cli_test::solve_program();                     \
+    if (program_.empty() || !std::filesystem::exists(program_)) {                   \
+      WARN("viscoroll-solve not built (" << program_                                \
+                                         << "); build viscoroll_solve to run this " \
+                                            "test");                                \
+      return;                                                                       \
+    }                                                                               \
   } while (false)

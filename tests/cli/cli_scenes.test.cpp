@@ -21,8 +21,7 @@ std::vector<std::string> as_options(const cli::Scene& s, const std::string& meth
                              "--tau", exact(m->tau)});
   } else {
     const auto& e = std::get<cli::ElasticModel>(s.material);
-    args.insert(args.end(),
-                {"--mu-d", exact(e.mu), "--nu", exact(e.nu), "--f", "0", "--tau", "0"});
+    args.insert(args.end(), {"--mu-d", exact(e.mu), "--nu", exact(e.nu), "--f", "0", "--tau", "0"});
   }
   if (const auto* r = std::get_if<cli::EllipsoidProfile>(&s.roller)) {
     args.insert(args.end(), {"--c1", exact(r->c1), "--c2", exact(r->c2)});
@@ -47,9 +46,11 @@ TEST_CASE("cli: every shipped scene runs with each method it suits, as a file an
   struct Case {
     std::string file, method;
   };
-  const std::vector<Case> cases = {{"paper.json", "line"},         {"paper.json", "bem"},
+  const std::vector<Case> cases = {{"paper.json", "line"},
+                                   {"paper.json", "bem"},
                                    {"polyamide_cylinder.json", "plane"},
-                                   {"rubber_roller.json", "line"}, {"rubber_roller.json", "bem"},
+                                   {"rubber_roller.json", "line"},
+                                   {"rubber_roller.json", "bem"},
                                    {"rubber_ball.json", "bem"}};
   for (const auto& c : cases) {
     const std::string path = (scenes_dir() / c.file).string();
@@ -64,8 +65,7 @@ TEST_CASE("cli: every shipped scene runs with each method it suits, as a file an
       CHECK(lines[k]["method"] == c.method);
       CHECK(lines[k]["speed"].get<double>() == scene.speeds[k]);
       CHECK(lines[k]["converged"] == true);
-      for (const char* key : {"a0", "b0", "chi", "a_long_term"})
-        CHECK(lines[k][key].is_number());
+      for (const char* key : {"a0", "b0", "chi", "a_long_term"}) CHECK(lines[k][key].is_number());
       if (c.method != "plane") {
         CHECK(lines[k]["y_minus"].get<double>() == -lines[k]["l"].get<double>());
         CHECK(lines[k]["y_plus"].get<double>() == lines[k]["l"].get<double>());
@@ -107,12 +107,12 @@ TEST_CASE("cli: a scene that does not suit the method exits 2 naming the key", "
   }
 }
 
-TEST_CASE("cli: a sweep solves each speed of each tau in order; --speed overrides the scene's",
+TEST_CASE("cli: a sweep solves each speed of each tau in order, and --speed overrides the scene's",
           "[cli][scene]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
-  const Run r = run({"--method", "line", "--mu-d", "1", "--nu", "0.5", "--f", "9", "--tau",
-                     "1,2", "--speed", "0.5,1,2", "--c1", "1", "--c2", "0.0798291", "--load",
-                     "5.3", "--grid", "4"});
+  const Run r = run({"--method", "line",      "--mu-d", "1",       "--nu",    "0.5",  "--f",
+                     "9",        "--tau",     "1,2",    "--speed", "0.5,1,2", "--c1", "1",
+                     "--c2",     "0.0798291", "--load", "5.3",     "--grid",  "4"});
   INFO("stdout: " << r.out << "\nstderr: " << r.err);
   CHECK(r.status == 0);
   const auto lines = json_lines(r.out);

@@ -1,13 +1,13 @@
 // The scene reader of viscoroll-solve (examples/cli/scene_file.hpp) as a unit: valid scenes give
 // the right values, each error names its key with its path and the valid range, and the shipped
 // scenes parse.
+#include "cli/scene_file.hpp"
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <variant>
-
-#include "cli/scene_file.hpp"
 
 namespace {
 
@@ -23,7 +23,8 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-const std::string sls = R"("material": {"model": "standard_linear_solid", "mu_d": 2e6, "nu": 0.5, "f": 9, "tau": 0.01})";
+const std::string sls =
+    R"("material": {"model": "standard_linear_solid", "mu_d": 2e6, "nu": 0.5, "f": 9, "tau": 0.01})";
 const std::string ellipsoid = R"("roller": {"profile": "ellipsoid", "c1": 20.0, "c2": 1.0})";
 
 std::string scene_with(const std::string& material, const std::string& roller,
@@ -56,10 +57,11 @@ TEST_CASE("cli scene file: a valid scene gives its values", "[cli][scene]") {
 }
 
 TEST_CASE("cli scene file: elastic material, cylinder, optional keys absent", "[cli][scene]") {
-  const Scene s = parse_scene(scene_with(R"("material": {"nu": 0.3, "model": "elastic", "mu": 8e10})",
-                                         R"("roller": {"profile": "cylinder", "radius": 0.05})",
-                                         R"("speeds": [0], "load": 5e4)"),
-                              "s.json");
+  const Scene s =
+      parse_scene(scene_with(R"("material": {"nu": 0.3, "model": "elastic", "mu": 8e10})",
+                             R"("roller": {"profile": "cylinder", "radius": 0.05})",
+                             R"("speeds": [0], "load": 5e4)"),
+                  "s.json");
   CHECK(s.description.empty());
   CHECK(std::get<ElasticModel>(s.material).mu == 8e10);
   CHECK(std::get<ElasticModel>(s.material).nu == 0.3);
@@ -83,8 +85,9 @@ TEST_CASE("cli scene file: each error names its key with its path and the range"
       {"", "not valid JSON"},
       {"[1]", "s.json: the scene must be a JSON object, got array"},
       {scene_with(sls, ellipsoid, rest + R"(, "speed": 1)"), "unknown key speed"},
-      {scene_with(R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": 9, "tau": 1, "g": 2})",
-                  ellipsoid),
+      {scene_with(
+           R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": 9, "tau": 1, "g": 2})",
+           ellipsoid),
        "unknown key material.g"},
       {scene_with(sls, R"("roller": {"profile": "ellipsoid", "c1": 1, "c2": 0.1, "radius": 1})"),
        "unknown key roller.radius"},
@@ -100,28 +103,33 @@ TEST_CASE("cli scene file: each error names its key with its path and the range"
       {scene_with(sls, ellipsoid, R"("load": 1, "speeds": [])"), "speeds is empty"},
       {scene_with(sls, ellipsoid, R"("load": 1e999, "speeds": [1])"),
        "load = 1e999 is outside the valid range load > 0"},
-      {scene_with(R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.7, "f": 9, "tau": 1})",
-                  ellipsoid),
+      {scene_with(
+           R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.7, "f": 9, "tau": 1})",
+           ellipsoid),
        "material.nu = 0.7 is outside the valid range -1 < nu <= 0.5"},
-      {scene_with(R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": "9", "tau": 1})",
-                  ellipsoid),
+      {scene_with(
+           R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": "9", "tau": 1})",
+           ellipsoid),
        "material.f must be a number, got string"},
       {scene_with(R"("material": {"model": "maxwell"})", ellipsoid),
        "material.model = \"maxwell\" is not one of elastic, standard_linear_solid"},
       {scene_with(sls, R"("roller": {"profile": "cone"})"),
        "roller.profile = \"cone\" is not one of ellipsoid, cylinder"},
-      {scene_with(sls, ellipsoid, rest + R"(, "grid": 2.5)"), "grid must be an integer, got number"},
+      {scene_with(sls, ellipsoid, rest + R"(, "grid": 2.5)"),
+       "grid must be an integer, got number"},
       {scene_with(sls, ellipsoid, rest + R"(, "grid": 0)"), "grid = 0 is outside the valid range"},
       {scene_with(sls, ellipsoid, rest + R"(, "load": 2)"), "duplicate key load"},
-      {scene_with(R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": 9, "tau": 1, "f": 2})",
-                  ellipsoid),
+      {scene_with(
+           R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": 9, "tau": 1, "f": 2})",
+           ellipsoid),
        "duplicate key material.f"},
       {scene_with(sls, ellipsoid, R"("load": 1, "speeds": [[1], {"a": 2}, -1e999])"),
        "speeds[2] = -1e999 is outside the valid range speed >= 0"},
   };
   for (const auto& c : cases) {
     INFO(c.text);
-    CHECK_THAT(error_of(c.text), Catch::Contains(c.message) && Catch::StartsWith("viscoroll-solve: s.json: "));
+    CHECK_THAT(error_of(c.text),
+               Catch::Contains(c.message) && Catch::StartsWith("viscoroll-solve: s.json: "));
   }
 }
 
