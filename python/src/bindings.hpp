@@ -1,0 +1,147 @@
+// viscoroll's Python module: what its three translation units share. module.cpp holds the
+// bindings, the scene types and the plane solver; solve_line.cpp and solve_bem.cpp the two heavy
+// solvers, each behind solve_*() and sweep_*() so that pybind11 and the solvers never meet in one
+// translation unit. Every solve is in double precision; an elastic material is the standard linear
+// solid with f = tau = 0, as on the command line (docs/cli.md).
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+#include <viscoroll/sweep.hpp>
+
+namespace viscoroll::python {
+
+enum class Method { plane, line, bem };
+
+/// A material: the standard linear solid of Eq. (1), or elastic (mu = mu_d, f = tau = 0).
+struct MaterialSpec {
+  bool elastic = false;
+  double mu_d = 0, nu = 0, f = 0, tau = 0;
+};
+
+/// A roller: the paper's ellipsoid (c1, c2) or a cylinder of `radius` (plane only, c1 = 1/radius).
+struct RollerSpec {
+  bool cylinder = false;
+  double c1 = 0, c2 = 0, radius = 0;
+};
+
+/// One scene: what a scene file holds (docs/cli.md), in any consistent units.
+struct SceneSpec {
+  MaterialSpec material;
+  RollerSpec roller;
+  double load = 0;
+  std::vector<double> speeds;
+  std::optional<Method> method;
+  std::optional<long> grid;
+  std::string description;
+  std::string source = "Scene";  ///< starts the messages of method-dependent checks
+};
+
+/// One output field: the command line's JSON value types.
+using Value = std::variant<double, long long, bool, std::string, std::vector<std::string>>;
+/// The command line's JSON fields of one solution, in its order (docs/cli.md, "Output").
+using Record = std::vector<std::pair<std::string, Value>>;
+
+/// One solution of any method: its fields and its functions of position.
+class Solved {
+ public:
+  explicit Solved(Method method) : method_(method) {}
+  Solved(const Solved&) = delete;
+  Solved& operator=(const Solved&) = delete;
+  virtual ~Solved() = default;
+
+  Method method() const { return method_; }
+  const Record& record() const { return record_; }
+  const Value* find(const std::string& key) const {
+    for (const auto& [name, value] : record_)
+      if (name == key) return &value;
+    return nullptr;
+  }
+
+  /// p(x, y); 0 outside the contact. Plane: p(x) for every y.
+  virtual double pressure(double x, double y) const = 0;
+  /// Half width, offset, F0 of the strip at y. Not available for the bem method (throws).
+  virtual double a(double y) const = 0;
+  virtual double b(double y) const = 0;
+  virtual double f0(double y) const = 0;
+
+  Record record_;
+
+ private:
+  Method method_;
+};
+
+using SolvedPtr = std::shared_ptr<const Solved>;
+
+/// The solver's discretisation for `method` from the scene's or the caller's grid: line terms
+/// (1..64, default 6), bem elements per semi-axis (2..512, default 16); throws
+/// std::invalid_argument naming `grid`.
+int discretisation(Method method, std::optional<long> grid);
+
+const char* method_name(Method method);
+
+/// Seconds since `start`.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A solver wrapped for viscoroll::sweep: each solve also times itself and builds its Solved
+/// (fields included) on the worker thread. The seed handed to the wrapped solver is the same
+/// solution viscoroll::sweep would hand it, so the numbers are those of the plain call.
+template <class Solver, class Make>
+struct TimedSolver {
+  using Inner = typename Solver::Solution;
+  struct Solution {
+    Inner inner;
+    SolvedPtr solved;
+    bool converged = false;
+    int iterations = 0;
+  };
+
+  const Solver& solver;
+  Make make;  ///< (Inner, speed, seconds) -> SolvedPtr
+
+  template <class Scene>
+  Solution solve(const Scene& scene, const Solution* seed) const {
+    const auto start = std::chrono::steady_clock::now();
+    Inner inner = [&] {
+      if constexpr (requires { solver.solve(scene, static_cast<const Inner*>(nullptr)); })
+        return solver.solve(scene, seed ? &seed->inner : nullptr);
+      else
+        return solver.solve(scene);  // the plane solver takes no seed
+    }();
+    const double seconds = seconds_since(start);
+    Solution out{std::move(inner), nullptr, false, 0};
+    out.converged = out.inner.converged;
+    out.iterations = out.inner.iterations;
+    out.solved = make(out.inner, scene.speed, seconds);
+    return out;
+  }
+};
+
+// The solvers (module.cpp: plane; solve_line.cpp; solve_bem.cpp). `scene` was checked for the
+// method; `start` seeds the iteration (line, bem) when it is a solution of the same method.
+SolvedPtr solve_plane(const SceneSpec& scene, double speed);
+SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start);
+SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start);
+/// The cell centres x (nx), y (ny) and pressures (ny x nx, row-major) of a bem result; false for
+/// another method.
+bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>& y,
+               std::vector<double>& p);
+
+// viscoroll::sweep over `speeds`; called with the GIL released.
+std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
+                                   const SweepOptions& options);
+std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds,
+                                  int terms, const SweepOptions& options);
+std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds,
+                                 int grid, const SweepOptions& options);
+
+}  // namespace viscoroll::python

@@ -1,0 +1,798 @@
+// viscoroll's Python module `_viscoroll` (re-exported by the package `viscoroll`, docs/python.md):
+// materials, rollers, Scene (and Scene.from_json, the command line's scene reader), solve(),
+// sweep() and Result. The plane solver lives here; the line and bem solvers in solve_line.cpp and
+// solve_bem.cpp. std::invalid_argument (the library's and the scene reader's messages, naming the
+// parameter) becomes ValueError.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+#include <viscoroll/core/validate.hpp>
+#include <viscoroll/material/elastic.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+#include <viscoroll/plane/plane_solver.hpp>
+
+#include "bindings.hpp"
+#include "cli/scene_file.hpp"
+
+#ifndef VISCOROLL_PYTHON_VERSION
+#define VISCOROLL_PYTHON_VERSION "0"
+#endif
+
+namespace py = pybind11;
+
+namespace viscoroll::python {
+
+const char* method_name(Method method) {
+  switch (method) {
+    case Method::plane:
+      return "plane";
+    case Method::line:
+      return "line";
+    case Method::bem:
+      return "bem";
+  }
+  return "?";
+}
+
+int discretisation(Method method, std::optional<long> grid) {
+  if (method == Method::line) {
+    const long n = grid.value_or(6);
+    if (n < 1 || n > 64)
+      throw std::invalid_argument(
+          "viscoroll: grid = " + std::to_string(n) +
+          " is outside the valid range 1 <= grid <= 64 for the line method (Chebyshev terms)");
+    return static_cast<int>(n);
+  }
+  if (method == Method::bem) {
+    const long n = grid.value_or(16);
+    if (n < 2 || n > 512)
+      throw std::invalid_argument(
+          "viscoroll: grid = " + std::to_string(n) +
+          " is outside the valid range 2 <= grid <= 512 for the bem method (elements per "
+          "semi-axis)");
+    return static_cast<int>(n);
+  }
+  return 0;  // plane: no discretisation
+}
+
+// ---------------------------------------------------------------------------------------------
+// The plane solver.
+
+namespace {
+
+using PlaneSolver = PlaneSolverD;
+using PlaneSolution = PlaneSolver::Solution;
+
+class PlaneSolved final : public Solved {
+ public:
+  PlaneSolved(PlaneSolution s, double tau, double speed, double seconds)
+      : Solved(Method::plane), s_(std::move(s)) {
+    const auto peak = s_.peak();
+    record_ = {{"method", std::string("plane")},
+               {"tau", tau},
+               {"speed", speed},
+               {"vtau", speed * tau},
+               {"a0", s_.a},
+               {"b0", s_.b},
+               {"a_long_term", s_.a_long_term},
+               {"chi", s_.chi},
+               {"pmax", peak.pressure},
+               {"pmax_x", peak.x},
+               {"seconds", seconds},
+               {"converged", s_.converged},
+               {"iterations", static_cast<long long>(s_.iterations)},
+               {"residual", s_.residual}};
+  }
+  double pressure(double x, double) const override { return s_.pressure(x); }
+  double a(double) const override { return s_.a; }
+  double b(double) const override { return s_.b; }
+  double f0(double) const override { return s_.f0; }
+
+ private:
+  PlaneSolution s_;
+};
+
+PlaneSolver make_plane_solver(const SceneSpec& scene) {
+  const auto& m = scene.material;
+  return PlaneSolver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau));
+}
+
+PlaneScene<double> plane_scene(const SceneSpec& scene, double speed) {
+  PlaneScene<double> s{scene.roller.c1, scene.load, speed};
+  s.validate();
+  return s;
+}
+
+}  // namespace
+
+SolvedPtr solve_plane(const SceneSpec& scene, double speed) {
+  const PlaneSolver solver = make_plane_solver(scene);
+  const PlaneScene<double> at = plane_scene(scene, speed);
+  const auto t0 = std::chrono::steady_clock::now();
+  PlaneSolution s = solver.solve(at);
+  const double seconds = seconds_since(t0);
+  return std::make_shared<PlaneSolved>(std::move(s), scene.material.tau, speed, seconds);
+}
+
+std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
+                                   const SweepOptions& options) {
+  const PlaneSolver solver = make_plane_solver(scene);
+  const PlaneScene<double> at = plane_scene(scene, 0.0);
+  for (const double v : speeds) plane_scene(scene, v);
+  const double tau = scene.material.tau;
+  auto make = [tau](const PlaneSolution& s, double speed, double seconds) -> SolvedPtr {
+    return std::make_shared<PlaneSolved>(s, tau, speed, seconds);
+  };
+  const TimedSolver<PlaneSolver, decltype(make)> timed{solver, make};
+  auto solutions = sweep(timed, at, speeds, options);
+  std::vector<SolvedPtr> out;
+  out.reserve(solutions.size());
+  for (auto& s : solutions) out.push_back(std::move(s.solved));
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Python-facing types.
+
+namespace {
+
+struct Material {
+  MaterialSpec spec;
+};
+struct StandardLinearSolidMaterial : Material {};
+struct ElasticMaterial : Material {};
+
+struct Roller {
+  RollerSpec spec;
+};
+struct EllipsoidRoller : Roller {};
+struct CylinderRoller : Roller {};
+
+/// The result of one solve, shared with Python.
+struct Result {
+  SolvedPtr solved;
+};
+
+std::string shortest(double x) { return cli::scene_detail::shortest(x); }
+
+/// The message of a scene-reader error without the program's name (it names the file and key).
+std::string reader_message(const std::string& what) {
+  const std::string prefix = "viscoroll-solve: ";
+  return what.starts_with(prefix) ? what.substr(prefix.size()) : what;
+}
+
+std::optional<Method> parse_method(const std::optional<std::string>& name) {
+  if (!name) return std::nullopt;
+  if (*name == "plane") return Method::plane;
+  if (*name == "line") return Method::line;
+  if (*name == "bem") return Method::bem;
+  throw std::invalid_argument("viscoroll: method = \"" + *name +
+                              "\" is not one of \"plane\", \"line\", \"bem\"");
+}
+
+void check_speeds(const std::vector<double>& speeds) {
+  for (const double v : speeds) detail::require_non_negative("speed", v);
+}
+
+/// The method to use: the caller's, else the scene's, else the roller's natural one (a cylinder:
+/// plane; an ellipsoid: line).
+Method method_for(const SceneSpec& scene, const std::optional<std::string>& method) {
+  if (auto m = parse_method(method)) return *m;
+  if (scene.method) return *scene.method;
+  return scene.roller.cylinder ? Method::plane : Method::line;
+}
+
+cli::Method to_cli(Method m) {
+  switch (m) {
+    case Method::plane:
+      return cli::Method::plane;
+    case Method::line:
+      return cli::Method::line;
+    case Method::bem:
+      return cli::Method::bem;
+  }
+  return cli::Method::plane;
+}
+
+/// The command line's checks of a scene against a method (the cylinder is the plane method's
+/// roller; the line method's slender contact; the bem method's c2/c1; the scene's own grid), and
+/// the discretisation: `grid` (the caller's) wins over the scene's.
+int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid) {
+  cli::Scene s;
+  if (scene.roller.cylinder)
+    s.roller = cli::CylinderProfile{scene.roller.radius};
+  else
+    s.roller = cli::EllipsoidProfile{scene.roller.c1, scene.roller.c2};
+  if (!grid) s.grid = scene.grid;
+  try {
+    cli::check_scene_for_method(s, to_cli(method), scene.source);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(reader_message(e.what()));
+  }
+  return discretisation(method, grid ? grid : scene.grid);
+}
+
+SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
+  SceneSpec out;
+  std::visit(
+      [&](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (std::is_same_v<M, cli::ElasticModel>)
+          out.material = {true, m.mu, m.nu, 0.0, 0.0};
+        else
+          out.material = {false, m.mu_d, m.nu, m.f, m.tau};
+      },
+      in.material);
+  std::visit(
+      [&](const auto& r) {
+        using R = std::decay_t<decltype(r)>;
+        if constexpr (std::is_same_v<R, cli::EllipsoidProfile>)
+          out.roller = {false, r.c1, r.c2, 0.0};
+        else
+          out.roller = {true, 1 / r.radius, 0.0, r.radius};
+      },
+      in.roller);
+  out.load = in.load;
+  out.speeds = in.speeds;
+  if (in.method) out.method = parse_method(std::string(cli::method_name(*in.method)));
+  out.grid = in.grid;
+  out.description = in.description;
+  out.source = source;
+  return out;
+}
+
+py::object to_python(const Value& value) {
+  if (const auto* x = std::get_if<double>(&value)) return py::float_(*x);
+  if (const auto* n = std::get_if<long long>(&value)) return py::int_(*n);
+  if (const auto* b = std::get_if<bool>(&value)) return py::bool_(*b);
+  if (const auto* s = std::get_if<std::string>(&value)) return py::str(*s);
+  return py::cast(std::get<std::vector<std::string>>(value));
+}
+
+/// A 1-D float64 array as a vector (any sequence of numbers converts).
+std::vector<double> as_vector(const py::object& values, const char* name) {
+  const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
+  if (!array || array.ndim() > 1)
+    throw std::invalid_argument(std::string("viscoroll: ") + name +
+                                " must be a number or a 1-D sequence of numbers");
+  const double* data = array.data();
+  return std::vector<double>(data, data + array.size());
+}
+
+py::array_t<double> as_array(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid,
+                      double speed, const Result* start) {
+  const int n = check_for_method(scene, method, grid);
+  const Solved* seed = start ? start->solved.get() : nullptr;
+  switch (method) {
+    case Method::plane:
+      return solve_plane(scene, speed);
+    case Method::line:
+      return solve_line(scene, speed, n, seed);
+    case Method::bem:
+      return solve_bem(scene, speed, n, seed);
+  }
+  throw std::logic_error("viscoroll: unknown method");
+}
+
+/// The sweep's fields as NumPy arrays (numbers float64, counts int64, flags bool) and lists
+/// (reason, warnings), in the command line's order; `method` is left out (it is the argument).
+py::dict to_columns(const std::vector<SolvedPtr>& solved) {
+  py::dict out;
+  if (solved.empty()) return out;
+  const std::size_t n = solved.size();
+  for (const auto& [key, first] : solved.front()->record()) {
+    if (key == "method") continue;
+    auto value_at = [&, name = key](std::size_t i) -> const Value& {
+      const Value* v = solved[i]->find(name);
+      if (!v) throw std::logic_error("viscoroll: field " + name + " missing");
+      return *v;
+    };
+    if (std::holds_alternative<double>(first)) {
+      py::array_t<double> column(static_cast<py::ssize_t>(n));
+      auto* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) data[i] = std::get<double>(value_at(i));
+      out[py::str(key)] = column;
+    } else if (std::holds_alternative<long long>(first)) {
+      py::array_t<std::int64_t> column(static_cast<py::ssize_t>(n));
+      auto* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i)
+        data[i] = static_cast<std::int64_t>(std::get<long long>(value_at(i)));
+      out[py::str(key)] = column;
+    } else if (std::holds_alternative<bool>(first)) {
+      py::array_t<bool> column(static_cast<py::ssize_t>(n));
+      auto* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) data[i] = std::get<bool>(value_at(i));
+      out[py::str(key)] = column;
+    } else {
+      py::list column;
+      for (std::size_t i = 0; i < n; ++i) column.append(to_python(value_at(i)));
+      out[py::str(key)] = column;
+    }
+  }
+  return out;
+}
+
+/// The docstrings of the result's fields (the command line's JSON fields, docs/cli.md).
+const std::vector<std::pair<const char*, const char*>>& field_docs() {
+  static const std::vector<std::pair<const char*, const char*>> docs = {
+      {"method", "'plane', 'line' or 'bem'."},
+      {"tau", "Relaxation time (0 for an elastic material)."},
+      {"speed", "Rolling speed V."},
+      {"vtau", "V tau, the memory length."},
+      {"a0", "Half width of the contact at y = 0."},
+      {"b0", "Offset of the contact's centre at y = 0 ahead of the roller's axis."},
+      {"l", "Half length of the contact along the roller's axis (line, bem)."},
+      {"y_minus", "Lower end of the contact along the axis, -l (line, bem)."},
+      {"y_plus", "Upper end of the contact along the axis, +l (line, bem)."},
+      {"d", "Penetration (line, bem)."},
+      {"a_long_term",
+       "a0 of the static (V tau = 0) long-term contact; bem: of its Hertz ellipse."},
+      {"l0", "l of the static long-term contact (line, bem)."},
+      {"d0", "d of the static long-term contact (line, bem)."},
+      {"chi", "Rolling-friction coefficient (Eq. 51/54)."},
+      {"pmax", "Peak pressure on y = 0."},
+      {"pmax_x", "Where the peak pressure on y = 0 is."},
+      {"seconds", "Run time of this solve (s)."},
+      {"converged", "The iteration met its tolerance (nothing is claimed otherwise)."},
+      {"root",
+       "line: the line equations have a root here (False: a certified least-squares minimum)."},
+      {"iterations", "Iterations (bem: active-set iterations)."},
+      {"residual", "Final residual (nan where undefined)."},
+      {"terms", "line: Chebyshev terms of ln a(y) (the grid argument)."},
+      {"gmres_iterations", "bem: Krylov iterations over all active-set iterations."},
+      {"grid", "bem: elements per semi-axis of the static long-term Hertz ellipse."},
+      {"cells", "bem: cells of the grid."},
+      {"reason", "line, bem: why the iteration stopped."},
+      {"warnings", "line, bem: domain-of-validity warnings (a list of str)."},
+  };
+  return docs;
+}
+
+std::string material_repr(const MaterialSpec& m) {
+  if (m.elastic) return "Elastic(mu=" + shortest(m.mu_d) + ", nu=" + shortest(m.nu) + ")";
+  return "StandardLinearSolid(mu_d=" + shortest(m.mu_d) + ", nu=" + shortest(m.nu) +
+         ", f=" + shortest(m.f) + ", tau=" + shortest(m.tau) + ")";
+}
+
+std::string roller_repr(const RollerSpec& r) {
+  if (r.cylinder) return "Cylinder(radius=" + shortest(r.radius) + ")";
+  return "Ellipsoid(c1=" + shortest(r.c1) + ", c2=" + shortest(r.c2) + ")";
+}
+
+py::object material_object(const MaterialSpec& m) {
+  if (m.elastic) return py::cast(ElasticMaterial{{m}});
+  return py::cast(StandardLinearSolidMaterial{{m}});
+}
+
+py::object roller_object(const RollerSpec& r) {
+  if (r.cylinder) return py::cast(CylinderRoller{{r}});
+  return py::cast(EllipsoidRoller{{r}});
+}
+
+constexpr const char* solve_doc = R"doc(
+solve(scene, method=None, grid=None, speed=None, start=None) -> Result
+
+Solve one scene at one speed.
+
+Parameters
+----------
+scene : Scene
+    Material, roller, load (line, bem: total load; plane: load per unit length) and speeds.
+method : {"line", "plane", "bem"}, optional
+    "line": the paper's 3-D line-contact theory (an Ellipsoid with c2 < 8 e^-3 c1);
+    "plane": Hunter's plane problem of a cylinder (an Ellipsoid's c2 is ignored);
+    "bem": the exact 3-D boundary-element reference. Default: the scene's method (a scene
+    file's "method"), else "plane" for a Cylinder and "line" for an Ellipsoid.
+grid : int, optional
+    Discretisation, as viscoroll-solve --grid: line, Chebyshev terms of ln a(y), 1..64
+    (default 6); bem, elements per semi-axis of the static long-term Hertz ellipse, 2..512
+    (default 16); ignored by plane. Default: the scene's grid, else those defaults.
+speed : float, optional
+    Rolling speed >= 0. Default: the scene's only speed (a ValueError if it has none or
+    several; use sweep() for several).
+start : Result, optional
+    A result of the same method and material at a nearby speed to continue from (line, bem).
+
+Returns
+-------
+Result
+    The scalar outputs as attributes (a0, b0, l, d, chi, pmax, converged, reason, ...: the
+    command line's JSON fields) and the functions pressure(x, y), a(y), b(y), f0(y).
+
+Raises
+------
+ValueError
+    Invalid input, with the library's message naming the parameter. A solve that does not
+    converge raises nothing: its result has converged == False and a reason.
+
+Example
+-------
+>>> import viscoroll as vr
+>>> scene = vr.Scene(material=vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0),
+...                  roller=vr.Ellipsoid(c1=1.0, c2=0.0798), load=0.0582)
+>>> r = vr.solve(scene, speed=1.0)
+>>> r.converged, r.a0, r.chi
+)doc";
+
+constexpr const char* sweep_doc = R"doc(
+sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16) -> dict
+
+Solve one scene over many speeds on several threads (viscoroll::sweep).
+
+The speeds are cut, in the order given, into chunks of `chunk` speeds. Within a chunk each
+speed continues from the previous converged solution (as the command line does); the first
+speed of a chunk starts cold. Chunks run on `threads` threads with the GIL released; the
+numbers are the same bit for bit for any thread count. chunk=len(speeds) continues through
+every speed, serially, as viscoroll-solve and panek_kalker do.
+
+Parameters
+----------
+scene : Scene
+speeds : sequence of float, optional
+    Speeds >= 0, solved in this order; default the scene's speeds.
+method, grid : as for solve().
+threads : int, optional
+    Worker threads, 0..4096; None or 0: every core (std::thread::hardware_concurrency()).
+chunk : int, optional
+    Speeds per chunk of continuation, 1..1048576 (default 16, viscoroll::SweepOptions's).
+
+Returns
+-------
+dict
+    One entry per output field of solve() except "method", in the command line's order:
+    numbers as float64 arrays, counts (iterations, terms, ...) as int64 arrays, converged
+    (and, line, root) as bool arrays, reason (str) and warnings (list of str) as lists.
+    Non-convergence is per speed: check converged.
+
+Raises
+------
+ValueError
+    Invalid input (checked before any solve), with the library's message.
+)doc";
+
+}  // namespace
+}  // namespace viscoroll::python
+
+PYBIND11_MODULE(_viscoroll, m) {
+  using namespace viscoroll::python;
+  namespace vp = viscoroll::python;
+  m.doc() =
+      "viscoroll: steady rolling of a rigid roller on a viscoelastic half space (Panek & Kalker "
+      "1980).\n\nThe compiled part of the package `viscoroll`; see help(viscoroll).";
+  m.attr("__version__") = VISCOROLL_PYTHON_VERSION;
+
+  // Materials.
+  py::class_<vp::Material>(m, "Material",
+                           "Base class of the materials (StandardLinearSolid, Elastic).")
+      .def_property_readonly(
+          "nu", [](const vp::Material& s) { return s.spec.nu; }, "Poisson's ratio.")
+      .def_property_readonly(
+          "instantaneous_compliance",
+          [](const vp::Material& s) {
+            return viscoroll::StandardLinearSolid<double>(s.spec.mu_d, s.spec.nu, s.spec.f,
+                                                          s.spec.tau)
+                .instantaneous_compliance();
+          },
+          "c = (1 - nu)/(2 pi mu_d), the factor of the Boussinesq equation (the library's "
+          "value).")
+      .def_property_readonly(
+          "long_term_compliance",
+          [](const vp::Material& s) {
+            return viscoroll::StandardLinearSolid<double>(s.spec.mu_d, s.spec.nu, s.spec.f,
+                                                          s.spec.tau)
+                .long_term_compliance();
+          },
+          "(1 + f) c, the compliance under a load held for t >> tau.")
+      .def("__repr__", [](const vp::Material& s) { return material_repr(s.spec); });
+
+  py::class_<StandardLinearSolidMaterial, vp::Material>(
+      m, "StandardLinearSolid",
+      "StandardLinearSolid(mu_d, nu, f, tau)\n\n"
+      "The standard linear solid of the paper's Eq. (1): instantaneous (glassy) shear modulus\n"
+      "mu_d > 0, Poisson's ratio -1 < nu <= 0.5, creep ratio f >= 0 (the long-term modulus is\n"
+      "mu_d/(1 + f)), relaxation time tau >= 0. Raises ValueError naming a parameter out of "
+      "range.")
+      .def(py::init([](double mu_d, double nu, double f, double tau) {
+             viscoroll::StandardLinearSolid<double>(mu_d, nu, f, tau);  // validates
+             return StandardLinearSolidMaterial{{{false, mu_d, nu, f, tau}}};
+           }),
+           py::arg("mu_d"), py::arg("nu"), py::arg("f"), py::arg("tau"))
+      .def_property_readonly(
+          "mu_d", [](const vp::Material& s) { return s.spec.mu_d; },
+          "Instantaneous shear modulus.")
+      .def_property_readonly(
+          "f", [](const vp::Material& s) { return s.spec.f; }, "Creep ratio of Eq. (1).")
+      .def_property_readonly(
+          "tau", [](const vp::Material& s) { return s.spec.tau; }, "Relaxation time.");
+
+  py::class_<ElasticMaterial, vp::Material>(
+      m, "Elastic",
+      "Elastic(mu, nu)\n\nA linear elastic half space: shear modulus mu > 0, Poisson's ratio\n"
+      "-1 < nu <= 0.5 (solved as the standard linear solid with f = tau = 0, as on the command\n"
+      "line). Raises ValueError naming a parameter out of range.")
+      .def(py::init([](double mu, double nu) {
+             viscoroll::Elastic<double>(mu, nu);  // validates
+             return ElasticMaterial{{{true, mu, nu, 0.0, 0.0}}};
+           }),
+           py::arg("mu"), py::arg("nu"))
+      .def_property_readonly(
+          "mu", [](const vp::Material& s) { return s.spec.mu_d; }, "Shear modulus.");
+
+  // Rollers.
+  py::class_<vp::Roller>(m, "Roller", "Base class of the roller profiles (Ellipsoid, Cylinder).")
+      .def("__repr__", [](const vp::Roller& r) { return roller_repr(r.spec); });
+  py::class_<EllipsoidRoller, vp::Roller>(
+      m, "Ellipsoid",
+      "Ellipsoid(c1, c2)\n\nThe paper's doubly parabolic roller (Eq. 27), gap c1 x^2/2 + c2 "
+      "y^2/2:\ncurvature c1 > 0 across the rolling direction, c2 > 0 along the axis (line: c2 < "
+      "8 e^-3 c1;\nbem: 1e-10 <= c2/c1 <= 1e10; plane uses c1 only).")
+      .def(py::init([](double c1, double c2) {
+             viscoroll::detail::require_positive("c1", c1);
+             viscoroll::detail::require_positive("c2", c2);
+             return EllipsoidRoller{{{false, c1, c2, 0.0}}};
+           }),
+           py::arg("c1"), py::arg("c2"))
+      .def_property_readonly(
+          "c1", [](const vp::Roller& r) { return r.spec.c1; }, "Curvature across (1/radius).")
+      .def_property_readonly(
+          "c2", [](const vp::Roller& r) { return r.spec.c2; }, "Curvature along the axis.");
+  py::class_<CylinderRoller, vp::Roller>(
+      m, "Cylinder",
+      "Cylinder(radius)\n\nA cylinder of radius > 0: the plane method's roller (c1 = 1/radius).")
+      .def(py::init([](double radius) {
+             viscoroll::detail::require_positive("radius", radius);
+             return CylinderRoller{{{true, 1 / radius, 0.0, radius}}};
+           }),
+           py::arg("radius"))
+      .def_property_readonly(
+          "radius", [](const vp::Roller& r) { return r.spec.radius; }, "Radius.")
+      .def_property_readonly(
+          "c1", [](const vp::Roller& r) { return r.spec.c1; }, "1/radius.");
+
+  // Scene.
+  py::class_<SceneSpec>(
+      m, "Scene",
+      "Scene(material, roller, load, speeds=None)\n\n"
+      "One problem: a material (StandardLinearSolid or Elastic), a roller (Ellipsoid or\n"
+      "Cylinder), the load (> 0; total for line and bem, per unit length for plane) and\n"
+      "optionally the speeds (each >= 0) for sweep() and solve(). Any consistent units.\n"
+      "Scene.from_json(path) reads a scene file of the command line (docs/cli.md).")
+      .def(py::init([](const vp::Material& material, const vp::Roller& roller, double load,
+                       const std::optional<py::object>& speeds) {
+             SceneSpec s;
+             s.material = material.spec;
+             s.roller = roller.spec;
+             viscoroll::detail::require_positive("load", load);
+             s.load = load;
+             if (speeds && !speeds->is_none()) s.speeds = as_vector(*speeds, "speeds");
+             check_speeds(s.speeds);
+             return s;
+           }),
+           py::arg("material"), py::arg("roller"), py::arg("load"),
+           py::arg("speeds") = py::none())
+      .def_static(
+          "from_json",
+          [](const py::object& path) {
+            const std::string file = py::str(path);
+            try {
+              const auto scene =
+                  viscoroll::cli::parse_scene(viscoroll::cli::read_scene_file(file), file);
+              SceneSpec s = from_cli(scene, file);
+              if (s.method) check_for_method(s, *s.method, std::nullopt);
+              return s;
+            } catch (const std::invalid_argument& e) {
+              throw std::invalid_argument(reader_message(e.what()));
+            }
+          },
+          py::arg("path"),
+          "Scene.from_json(path) -> Scene\n\n"
+          "Read a scene file (JSON, SI units; docs/cli.md) with the command line's reader.\n"
+          "Its method and grid become the defaults of solve() and sweep(). Raises ValueError\n"
+          "naming the file and the key with its path, e.g. 'paper.json: material.f = -1 is\n"
+          "outside the valid range f >= 0 (finite)'.")
+      .def_property_readonly(
+          "material", [](const SceneSpec& s) { return material_object(s.material); },
+          "The material.")
+      .def_property_readonly(
+          "roller", [](const SceneSpec& s) { return roller_object(s.roller); }, "The roller.")
+      .def_readonly("load", &SceneSpec::load, "The load.")
+      .def_property_readonly(
+          "speeds", [](const SceneSpec& s) { return as_array(s.speeds); },
+          "The speeds (a float64 array; empty if none).")
+      .def_property_readonly(
+          "method",
+          [](const SceneSpec& s) -> py::object {
+            if (!s.method) return py::none();
+            return py::str(method_name(*s.method));
+          },
+          "The scene file's method, or None.")
+      .def_property_readonly(
+          "grid",
+          [](const SceneSpec& s) -> py::object {
+            if (!s.grid) return py::none();
+            return py::int_(*s.grid);
+          },
+          "The scene file's grid, or None.")
+      .def_readonly("description", &SceneSpec::description, "The scene file's description.")
+      .def("__repr__", [](const SceneSpec& s) {
+        std::string out = "Scene(material=" + material_repr(s.material) +
+                          ", roller=" + roller_repr(s.roller) + ", load=" + shortest(s.load);
+        out += ", speeds=[";
+        for (std::size_t i = 0; i < s.speeds.size(); ++i)
+          out += (i ? ", " : "") + shortest(s.speeds[i]);
+        out += "]";
+        if (s.method) out += std::string(", method='") + method_name(*s.method) + "'";
+        if (s.grid) out += ", grid=" + std::to_string(*s.grid);
+        return out + ")";
+      });
+
+  // Result.
+  auto result = py::class_<Result>(
+      m, "Result",
+      "The result of solve(): the command line's output fields as attributes (a field that\n"
+      "its method does not give raises AttributeError), as_dict(), and the functions\n"
+      "pressure(x, y), a(y), b(y), f0(y) of NumPy arrays (broadcast; scalars give scalars).\n"
+      "Check converged (and reason) before using the numbers.");
+  for (const auto& [name, doc] : field_docs()) {
+    const std::string key = name;
+    result.def_property_readonly(
+        name,
+        [key](const Result& r) -> py::object {
+          const Value* v = r.solved->find(key);
+          if (!v)
+            throw py::attribute_error("viscoroll: the " +
+                                      std::string(method_name(r.solved->method())) +
+                                      " method gives no " + key);
+          return to_python(*v);
+        },
+        doc);
+  }
+  result
+      .def(
+          "as_dict",
+          [](const Result& r) {
+            py::dict out;
+            for (const auto& [key, value] : r.solved->record()) out[py::str(key)] = to_python(value);
+            return out;
+          },
+          "The output fields as a dict, in the command line's JSON order.")
+      .def(
+          "pressure",
+          py::vectorize([](const Result* r, double x, double y) { return r->solved->pressure(x, y); }),
+          py::arg("x"), py::arg("y"),
+          "pressure(x, y) -> ndarray\n\nThe contact pressure p(x, y) (Eq. 35), 0 outside the "
+          "contact; x in the rolling\ndirection from the roller's axis (the frame moves with the "
+          "roller, towards +x), y along\nthe axis. x and y broadcast (NumPy rules); float64 out; "
+          "scalars give a float.\nplane: p(x) for any y. bem: the pressure of the cell holding "
+          "(x, y).")
+      .def(
+          "a", py::vectorize([](const Result* r, double y) { return r->solved->a(y); }),
+          py::arg("y"),
+          "a(y) -> ndarray\n\nHalf width of the contact strip at y (plane: a for every y). Not "
+          "for bem (ValueError).")
+      .def(
+          "b", py::vectorize([](const Result* r, double y) { return r->solved->b(y); }),
+          py::arg("y"),
+          "b(y) -> ndarray\n\nOffset of the strip's centre ahead of the axis at y (plane: b). "
+          "Not for bem.")
+      .def(
+          "f0", py::vectorize([](const Result* r, double y) { return r->solved->f0(y); }),
+          py::arg("y"),
+          "f0(y) -> ndarray\n\nF0(y) of Eq. (33), the strip's integral of the pseudo-pressure "
+          "(plane: F0 of Eq. 52).\nNot for bem.")
+      .def(
+          "cell_pressures",
+          [](const Result& r) {
+            std::vector<double> x, y, p;
+            if (!bem_cells(*r.solved, x, y, p))
+              throw std::invalid_argument(
+                  "viscoroll: cell_pressures() is for results of the bem method");
+            py::array_t<double> grid({static_cast<py::ssize_t>(y.size()),
+                                      static_cast<py::ssize_t>(x.size())});
+            std::copy(p.begin(), p.end(), grid.mutable_data());
+            return py::make_tuple(as_array(x), as_array(y), grid);
+          },
+          "cell_pressures() -> (x, y, p)\n\nbem: the cell centres x (nx,), y (ny,) and the cell "
+          "pressures p (ny, nx).")
+      .def("__repr__", [](const Result& r) {
+        const auto real = [&](const char* key) {
+          const Value* v = r.solved->find(key);
+          return v && std::holds_alternative<double>(*v) ? shortest(std::get<double>(*v))
+                                                         : std::string("-");
+        };
+        const Value* c = r.solved->find("converged");
+        std::string out = std::string("Result(method='") + method_name(r.solved->method()) +
+                          "', speed=" + real("speed") + ", a0=" + real("a0") +
+                          ", b0=" + real("b0");
+        if (r.solved->find("l")) out += ", l=" + real("l") + ", d=" + real("d");
+        out += ", chi=" + real("chi") + ", converged=" +
+               (c && std::get<bool>(*c) ? "True" : "False") + ")";
+        return out;
+      });
+
+  m.def(
+      "solve",
+      [](const SceneSpec& scene, const std::optional<std::string>& method,
+         std::optional<long> grid, std::optional<double> speed, const Result* start) {
+        const Method which = method_for(scene, method);
+        double v = 0;
+        if (speed) {
+          v = *speed;
+        } else if (scene.speeds.size() == 1) {
+          v = scene.speeds.front();
+        } else {
+          throw std::invalid_argument(
+              "viscoroll: solve() needs one speed: the scene has " +
+              std::to_string(scene.speeds.size()) +
+              " speeds; give speed=V, or call sweep() for several");
+        }
+        viscoroll::detail::require_non_negative("speed", v);
+        SolvedPtr solved;
+        {
+          py::gil_scoped_release release;
+          solved = solve_scene(scene, which, grid, v, start);
+        }
+        return Result{std::move(solved)};
+      },
+      py::arg("scene"), py::arg("method") = py::none(), py::arg("grid") = py::none(),
+      py::arg("speed") = py::none(), py::arg("start") = py::none(), solve_doc);
+
+  m.def(
+      "sweep",
+      [](const SceneSpec& scene, const std::optional<py::object>& speeds,
+         const std::optional<std::string>& method, std::optional<long> grid,
+         std::optional<long> threads, long chunk) {
+        const Method which = method_for(scene, method);
+        std::vector<double> v =
+            speeds && !speeds->is_none() ? as_vector(*speeds, "speeds") : scene.speeds;
+        if (v.empty())
+          throw std::invalid_argument(
+              "viscoroll: sweep() needs at least one speed: give speeds= or a scene with speeds");
+        check_speeds(v);
+        const int n = check_for_method(scene, which, grid);
+        viscoroll::SweepOptions options;
+        const long t = threads.value_or(0);
+        viscoroll::detail::require(t >= 0 && t <= 4096, "threads", t,
+                                   "0 <= threads <= 4096 (0 or None: all cores)");
+        viscoroll::detail::require(chunk >= 1 && chunk <= (1L << 20), "chunk", chunk,
+                                   "1 <= chunk <= 1048576");
+        options.threads = static_cast<unsigned>(t);
+        options.chunk = static_cast<std::size_t>(chunk);
+        std::vector<SolvedPtr> solved;
+        {
+          py::gil_scoped_release release;
+          switch (which) {
+            case Method::plane:
+              solved = sweep_plane(scene, v, options);
+              break;
+            case Method::line:
+              solved = sweep_line(scene, v, n, options);
+              break;
+            case Method::bem:
+              solved = sweep_bem(scene, v, n, options);
+              break;
+          }
+        }
+        return to_columns(solved);
+      },
+      py::arg("scene"), py::arg("speeds") = py::none(), py::arg("method") = py::none(),
+      py::arg("grid") = py::none(), py::arg("threads") = py::none(), py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
+      sweep_doc);
+}

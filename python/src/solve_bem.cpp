@@ -1,0 +1,139 @@
+// viscoroll's Python module: the boundary-element solver (BemSolverD) behind solve_bem and
+// sweep_bem. The fields are those of viscoroll-solve --method bem (examples/viscoroll_solve.cpp).
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <viscoroll/bem/bem_solver.hpp>
+
+#include "bindings.hpp"
+
+namespace viscoroll::python {
+namespace {
+
+using Solver = BemSolverD;
+using Solution = BemSolution<double>;
+
+class BemSolved final : public Solved {
+ public:
+  BemSolved(Solution s, double tau, double speed, int grid, double seconds)
+      : Solved(Method::bem), s_(std::move(s)) {
+    std::size_t peak = 0;
+    for (std::size_t q = 0; q < s_.pressure.size(); ++q)
+      if (s_.pressure[q] > s_.pressure[peak]) peak = q;
+    const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s_.grid.nx));
+    const double pmax = s_.pressure.empty() ? 0.0 : s_.pressure[peak];
+    record_ = {{"method", std::string("bem")},
+               {"tau", tau},
+               {"speed", speed},
+               {"vtau", speed * tau},
+               {"a0", s_.a0},
+               {"b0", s_.b0},
+               {"l", s_.l},
+               {"y_minus", -s_.l},
+               {"y_plus", s_.l},
+               {"d", s_.d},
+               {"a_long_term", s_.long_term.a},
+               {"l0", s_.long_term.b},
+               {"d0", s_.long_term.d},
+               {"chi", s_.chi},
+               {"pmax", pmax},
+               {"pmax_x", s_.grid.x(peak_i)},
+               {"seconds", seconds},
+               {"converged", s_.converged},
+               {"iterations", static_cast<long long>(s_.iterations)},
+               {"gmres_iterations", static_cast<long long>(s_.krylov_iterations)},
+               {"residual", s_.residual},
+               {"grid", static_cast<long long>(grid)},
+               {"cells", static_cast<long long>(s_.grid.size())},
+               {"reason", s_.reason},
+               {"warnings", s_.warnings}};
+  }
+
+  const Solution& solution() const { return s_; }
+
+  /// The pressure of the cell that holds (x, y); 0 off the grid.
+  double pressure(double x, double y) const override {
+    const auto& g = s_.grid;
+    const double i = std::round(x / g.hx) + (g.nx - 1) / 2;
+    const double j = std::round(y / g.hy) + (g.ny - 1) / 2;
+    if (!(i >= 0 && i < g.nx && j >= 0 && j < g.ny)) return 0.0;
+    return s_.p(static_cast<int>(i), static_cast<int>(j));
+  }
+  double a(double) const override { unavailable("a(y)"); }
+  double b(double) const override { unavailable("b(y)"); }
+  double f0(double) const override { unavailable("f0(y)"); }
+
+ private:
+  [[noreturn]] static void unavailable(const char* what) {
+    throw std::invalid_argument(std::string("viscoroll: ") + what +
+                                " is not available for the bem method (it gives a0, b0, l, the "
+                                "cell pressures: Result.cell_pressures(), and pressure(x, y))");
+  }
+
+  Solution s_;
+};
+
+Solver make_solver(const SceneSpec& scene, int grid) {
+  BemOptions options;
+  options.grid = grid;
+  const auto& m = scene.material;
+  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options);
+}
+
+BemScene<double> bem_scene(const SceneSpec& scene, double speed) {
+  BemScene<double> s{scene.roller.c1, scene.roller.c2, scene.load, speed};
+  s.validate();
+  return s;
+}
+
+}  // namespace
+
+/// The cell centres and pressures of a bem result (for Result.cell_pressures()).
+bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>& y,
+               std::vector<double>& p) {
+  const auto* bem = dynamic_cast<const BemSolved*>(&solved);
+  if (!bem) return false;
+  const auto& s = bem->solution();
+  x.resize(static_cast<std::size_t>(s.grid.nx));
+  y.resize(static_cast<std::size_t>(s.grid.ny));
+  for (int i = 0; i < s.grid.nx; ++i) x[static_cast<std::size_t>(i)] = s.grid.x(i);
+  for (int j = 0; j < s.grid.ny; ++j) y[static_cast<std::size_t>(j)] = s.grid.y(j);
+  p = s.pressure;  // index i + nx j: row-major (ny, nx)
+  return true;
+}
+
+SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start) {
+  const Solver solver = make_solver(scene, grid);
+  const BemScene<double> at = bem_scene(scene, speed);
+  const Solution* seed = nullptr;
+  if (start) {
+    const auto* bem = dynamic_cast<const BemSolved*>(start);
+    if (!bem)
+      throw std::invalid_argument("viscoroll: start must be a result of the bem method, got " +
+                                  std::string(method_name(start->method())));
+    seed = &bem->solution();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  Solution s = solver.solve(at, seed);
+  const double seconds = seconds_since(t0);
+  return std::make_shared<BemSolved>(std::move(s), scene.material.tau, speed, grid, seconds);
+}
+
+std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
+                                 const SweepOptions& options) {
+  const Solver solver = make_solver(scene, grid);
+  const BemScene<double> at = bem_scene(scene, 0.0);
+  for (const double v : speeds) bem_scene(scene, v);
+  const double tau = scene.material.tau;
+  auto make = [tau, grid](const Solution& s, double speed, double seconds) -> SolvedPtr {
+    return std::make_shared<BemSolved>(s, tau, speed, grid, seconds);
+  };
+  const TimedSolver<Solver, decltype(make)> timed{solver, make};
+  auto solutions = sweep(timed, at, speeds, options);
+  std::vector<SolvedPtr> out;
+  out.reserve(solutions.size());
+  for (auto& s : solutions) out.push_back(std::move(s.solved));
+  return out;
+}
+
+}  // namespace viscoroll::python

@@ -1,0 +1,68 @@
+"""viscoroll: the steady contact of a rigid roller rolling on a viscoelastic half space.
+
+Python bindings (pybind11, double precision) of the header-only C++ library viscoroll, which
+implements Panek & Kalker (1980): the 3-D line-contact theory of an ellipsoidal roller
+(method "line"), Hunter's plane problem of a cylinder ("plane") and an exact 3-D
+boundary-element reference ("bem").
+
+Materials
+    StandardLinearSolid(mu_d=, nu=, f=, tau=), Elastic(mu=, nu=)
+Rollers
+    Ellipsoid(c1=, c2=), Cylinder(radius=) (plane only)
+Scenes
+    Scene(material=, roller=, load=, speeds=None), Scene.from_json(path) (a scene file of the
+    command line viscoroll-solve, docs/cli.md)
+Solving
+    solve(scene, method=None, grid=None, speed=None, start=None) -> Result
+    sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16) -> dict of arrays
+Results
+    Result: the command line's output fields as attributes (a0, b0, l, d, chi, pmax, pmax_x,
+    converged, root, iterations, residual, reason, warnings, ...), as_dict(), and
+    pressure(x, y), a(y), b(y), f0(y) on NumPy arrays.
+
+Invalid input raises ValueError with the library's message naming the parameter; a solve that
+does not converge is returned with converged == False and a reason. The frame moves with the
+roller, which travels towards +x; x is measured from its axis. Any consistent units.
+
+Example
+-------
+>>> import numpy as np, viscoroll as vr
+>>> mat = vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0)
+>>> scene = vr.Scene(material=mat, roller=vr.Ellipsoid(c1=1.0, c2=0.0798),
+...                  load=5 / (3 * 10 * mat.instantaneous_compliance))
+>>> r = vr.solve(scene, speed=1.0)              # the line method, 6 Chebyshev terms
+>>> r.converged, r.a0, r.chi
+>>> p = r.pressure(np.linspace(-1, 1, 5), 0.0)  # float64 array of shape (5,)
+>>> s = vr.sweep(scene, speeds=np.logspace(-3, 3, 61))   # all cores, GIL released
+>>> s["chi"].shape, s["converged"].all()
+
+Documentation: docs/python.md of the repository.
+"""
+
+from ._viscoroll import (
+    Cylinder,
+    Elastic,
+    Ellipsoid,
+    Material,
+    Result,
+    Roller,
+    Scene,
+    StandardLinearSolid,
+    __version__,
+    solve,
+    sweep,
+)
+
+__all__ = [
+    "Cylinder",
+    "Elastic",
+    "Ellipsoid",
+    "Material",
+    "Result",
+    "Roller",
+    "Scene",
+    "StandardLinearSolid",
+    "__version__",
+    "solve",
+    "sweep",
+]
