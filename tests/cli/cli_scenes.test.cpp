@@ -133,3 +133,32 @@ TEST_CASE("cli: a sweep solves each speed of each tau in order, and --speed over
   CHECK(sweep[1]["speed"].get<double>() == 0.07);
   CHECK(sweep[0]["terms"] == 4);
 }
+
+TEST_CASE("cli: an elastic scene runs with every method, as options with f = 0 and tau = 0",
+          "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  const TempDir dir("viscoroll_cli_elastic");
+  const std::string path = (dir.path() / "elastic.json").string();
+  std::ofstream(path) << R"({"material": {"model": "elastic", "mu": 1e6, "nu": 0.5},
+    "roller": {"profile": "ellipsoid", "c1": 20, "c2": 1}, "load": 10, "speeds": [0, 1],
+    "grid": 6})";
+  const cli::Scene scene = cli::parse_scene(cli::read_scene_file(path), path);
+  for (const std::string method : {"plane", "line", "bem"}) {
+    const Run file = run({"--scene", path, "--method", method});
+    const Run options = run(as_options(scene, method));
+    INFO(method << "\nfile: " << file.out << file.err << "\noptions: " << options.out
+                << options.err);
+    CHECK(file.status == 0);
+    CHECK(options.status == 0);
+    auto a = json_lines(file.out), b = json_lines(options.out);
+    REQUIRE(a.size() == 2);
+    REQUIRE(b.size() == 2);
+    for (std::size_t k = 0; k < 2; ++k) {
+      CHECK(a[k]["tau"] == 0);
+      CHECK(a[k]["chi"].get<double>() == Approx(0).margin(1e-12));
+      a[k].erase("seconds");
+      b[k].erase("seconds");
+      CHECK(a[k] == b[k]);
+    }
+  }
+}
