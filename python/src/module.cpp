@@ -432,7 +432,8 @@ Example
 )doc";
 
 constexpr const char* sweep_doc = R"doc(
-sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16) -> dict
+sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16, with_results=False)
+    -> dict
 
 Solve one scene over many speeds on several threads (viscoroll::sweep).
 
@@ -452,6 +453,8 @@ threads : int, optional
     Worker threads, 0..4096; None or 0: every core (std::thread::hardware_concurrency()).
 chunk : int, optional
     Speeds per chunk of continuation, 1..1048576 (default 16, viscoroll::SweepOptions's).
+with_results : bool, optional
+    Also return the Result of every speed (key "results").
 
 Returns
 -------
@@ -459,7 +462,9 @@ dict
     One entry per output field of solve() except "method", in the command line's order:
     numbers as float64 arrays, counts (iterations, terms, ...) as int64 arrays, converged
     (and, line, root) as bool arrays, reason (str) and warnings (list of str) as lists.
-    Non-convergence is per speed: check converged.
+    Non-convergence is per speed: check converged. with_results=True adds "results", the
+    list of Result objects (for pressure(x, y), a(y), ... at each speed, or as start= of
+    solve()).
 
 Raises
 ------
@@ -758,7 +763,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       "sweep",
       [](const SceneSpec& scene, const std::optional<py::object>& speeds,
          const std::optional<std::string>& method, std::optional<long> grid,
-         std::optional<long> threads, long chunk) {
+         std::optional<long> threads, long chunk, bool with_results) {
         const Method which = method_for(scene, method);
         std::vector<double> v =
             speeds && !speeds->is_none() ? as_vector(*speeds, "speeds") : scene.speeds;
@@ -790,9 +795,16 @@ PYBIND11_MODULE(_viscoroll, m) {
               break;
           }
         }
-        return to_columns(solved);
+        py::dict out = to_columns(solved);
+        if (with_results) {
+          py::list results;
+          for (auto& r : solved) results.append(py::cast(Result{std::move(r)}));
+          out["results"] = results;
+        }
+        return out;
       },
       py::arg("scene"), py::arg("speeds") = py::none(), py::arg("method") = py::none(),
       py::arg("grid") = py::none(), py::arg("threads") = py::none(), py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
+      py::arg("with_results") = false,
       sweep_doc);
 }

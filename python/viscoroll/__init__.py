@@ -14,7 +14,8 @@ Scenes
     command line viscoroll-solve, docs/cli.md)
 Solving
     solve(scene, method=None, grid=None, speed=None, start=None) -> Result
-    sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16) -> dict of arrays
+    sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16,
+          with_results=False) -> dict of arrays
 Results
     Result: the command line's output fields as attributes (a0, b0, l, d, chi, pmax, pmax_x,
     converged, root, iterations, residual, reason, warnings, ...), as_dict(), and

@@ -1,0 +1,101 @@
+"""viscoroll.solve and viscoroll.sweep against the command line viscoroll-solve on the shipped
+scenes: every output field to 1e-12 (relative) at single speeds (a cold start each), and a
+serial sweep (chunk = len(speeds)) against the command line's continuation over all speeds."""
+
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import viscoroll as vr
+
+# (scene file, method or None for the file's, grid or None, indices of the speeds to check or None
+# for all)
+CASES = [
+    ("paper.json", None, None, None),
+    ("paper.json", "bem", 6, [0, 8, 12, 16, 24]),
+    ("polyamide_cylinder.json", None, None, None),
+    ("rubber_roller.json", None, None, None),
+    ("rubber_roller.json", "bem", 6, [0, 3, 7]),
+    ("rubber_ball.json", None, None, None),
+]
+
+TOLERANCE = 1e-12
+
+
+def run_cli(program, scene_path, method, grid, speeds):
+    """The command line's JSON lines for `speeds` (solved in order, with continuation)."""
+    args = [str(program), "--scene", str(scene_path),
+            "--speed", ",".join(repr(float(v)) for v in speeds)]
+    if method:
+        args += ["--method", method]
+    if grid:
+        args += ["--grid", str(grid)]
+    done = subprocess.run(args, capture_output=True, text=True, check=False)
+    assert done.returncode in (0, 1), done.stderr
+    return [json.loads(line) for line in done.stdout.splitlines()]
+
+
+def close(a, b):
+    if a is None or b is None:  # JSON null: not finite
+        return (a is None or not math.isfinite(a)) and (b is None or not math.isfinite(b))
+    return abs(a - b) <= TOLERANCE * max(abs(a), abs(b)) or a == b
+
+
+def compare(expected, got, where):
+    """`expected`: a JSON line; `got`: field -> value. Every field but seconds."""
+    for key, want in expected.items():
+        if key == "seconds":
+            continue
+        have = got[key]
+        if isinstance(want, bool) or isinstance(want, (str, list)):
+            assert have == want, f"{where}: {key} = {have!r}, command line {want!r}"
+        elif isinstance(want, int) and key != "residual":
+            assert have == want, f"{where}: {key} = {have!r}, command line {want!r}"
+        else:
+            assert close(want, have), f"{where}: {key} = {have!r}, command line {want!r}"
+
+
+@pytest.mark.parametrize("file,method,grid,indices", CASES,
+                         ids=[f"{c[0]}-{c[1] or 'file'}" for c in CASES])
+def test_single_speeds_match_the_command_line(viscoroll_solve, scenes_dir, file, method, grid,
+                                              indices):
+    scene = vr.Scene.from_json(scenes_dir / file)
+    speeds = scene.speeds if indices is None else scene.speeds[indices]
+    for v in speeds:
+        (expected,) = run_cli(viscoroll_solve, scenes_dir / file, method, grid, [v])
+        result = vr.solve(scene, method=method, grid=grid, speed=float(v))
+        assert expected["method"] == result.method
+        got = result.as_dict()
+        assert list(got) == list(expected), "the same fields in the same order"
+        compare(expected, got, f"{file} {result.method} speed {v}")
+
+
+@pytest.mark.parametrize("file,method,grid", [("paper.json", None, None),
+                                              ("polyamide_cylinder.json", None, None),
+                                              ("rubber_ball.json", None, None)])
+def test_serial_sweep_matches_the_command_lines_continuation(viscoroll_solve, scenes_dir, file,
+                                                             method, grid):
+    scene = vr.Scene.from_json(scenes_dir / file)
+    expected = run_cli(viscoroll_solve, scenes_dir / file, method, grid, scene.speeds)
+    got = vr.sweep(scene, method=method, grid=grid, chunk=len(scene.speeds), threads=1)
+    assert len(expected) == len(scene.speeds)
+    for i, line in enumerate(expected):
+        row = {key: (value[i].item() if isinstance(value, np.ndarray) else value[i])
+               for key, value in got.items()}
+        row["method"] = line["method"]
+        compare(line, row, f"{file} speed[{i}]")
+
+
+def test_scene_from_json_reads_what_the_command_line_reads(scenes_dir):
+    scene = vr.Scene.from_json(scenes_dir / "paper.json")
+    assert scene.method == "line" and scene.grid == 6 and scene.load == 20.0
+    assert isinstance(scene.material, vr.StandardLinearSolid)
+    assert (scene.material.mu_d, scene.material.nu, scene.material.f, scene.material.tau) == \
+        (3.0e6, 0.5, 9.0, 0.01)
+    assert isinstance(scene.roller, vr.Ellipsoid) and scene.roller.c2 == 1.596582
+    assert scene.speeds.dtype == np.float64 and scene.speeds.shape == (25,)
+    cylinder = vr.Scene.from_json(str(scenes_dir / "polyamide_cylinder.json"))
+    assert isinstance(cylinder.roller, vr.Cylinder) and cylinder.method == "plane"
