@@ -88,7 +88,7 @@ inline std::string type_of(const json& value) {
 }
 
 /// One JSON object of the scene, read key by key. The constructor rejects keys outside
-/// `allowed`; each reader names the key with its path in its error.
+/// `allowed` (unless it is empty); each reader names the key with its path in its error.
 class ObjectReader {
  public:
   ObjectReader(std::string source, const json& object, std::string path,
@@ -98,7 +98,8 @@ class ObjectReader {
       fail((path_.empty() ? std::string("the scene") : path_) + " must be a JSON object, got " +
            type_of(object_));
     for (const auto& item : object_.items())
-      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
+      if (!allowed.empty() &&
+          std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
         std::string list;
         for (const auto& key : allowed) {
           if (!list.empty()) list += ", ";
@@ -237,15 +238,8 @@ Result read_by_kind(const ObjectReader& parent, std::string_view key, std::strin
     if (!kinds.empty()) kinds += ", ";
     kinds += reader.*kind;
   }
-  // The selector first, so that an unknown key can be reported against the right kind.
-  const ObjectReader head(
-      parent.source(), object, path,
-      [&] {
-        std::vector<std::string> all;
-        for (const auto& item : object.items()) all.push_back(item.key());
-        return all;
-      }(),
-      path);
+  // The selector first, so that an unknown key is reported with the keys of the right kind.
+  const ObjectReader head(parent.source(), object, path, {}, path);
   const std::string name = head.string(selector);
   for (const auto& reader : readers)
     if (reader.*kind == name) {
