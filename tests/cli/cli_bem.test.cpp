@@ -1,58 +1,22 @@
 // viscoroll-solve --method bem (issue 6): bad input prints the library's message (parameter, value,
 // range) or the driver's on stderr, exits 2 and prints nothing on stdout; good input prints one
-// JSON line per tau and exits 0.
-//
-// The test runs the built program, <build>/bin/viscoroll-solve, found next to this executable
-// (<build>/tests/viscoroll_tests). It is built by the default target (examples/CMakeLists.txt),
-// not by the viscoroll_tests target alone: where it is missing the test says so and does nothing.
-#include <sys/wait.h>
-#include <unistd.h>
-
+// JSON line per tau and exits 0. The program is run as cli_run.hpp says.
 #include <catch2/catch.hpp>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_run.hpp"
+
 namespace {
 
-namespace fs = std::filesystem;
-
-fs::path solve_program() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
-  return self.parent_path().parent_path() / "bin" / "viscoroll-solve";
-}
-
-struct Run {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Runs viscoroll-solve with `args` (no shell metacharacters), capturing stdout and stderr.
-Run run(const fs::path& program, const std::string& args) {
-  const fs::path dir = fs::temp_directory_path();
-  const std::string stem = "viscoroll_cli_bem_" + std::to_string(::getpid());
-  const fs::path out = dir / (stem + ".out"), err = dir / (stem + ".err");
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on the chain of +.
-  std::string command = "'";
-  command.append(program.string()).append("' ").append(args);
-  command.append(" >'").append(out.string()).append("' 2>'").append(err.string()).append("'");
-  const int raw = std::system(command.c_str());
-  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+/// Runs viscoroll-solve with `args`, words separated by spaces.
+viscoroll::cli_test::Run run(const std::string& args) {
+  std::vector<std::string> words;
+  std::istringstream in(args);
+  std::string word;
+  while (in >> word) words.push_back(word);
+  return viscoroll::cli_test::run(words);
 }
 
 /// The paper's scene (docs/bem.md) on a coarse grid, with options replaced ("--mu-d=0") or
@@ -82,12 +46,7 @@ std::string arguments(const std::vector<std::string>& changes = {}) {
 
 TEST_CASE("cli: viscoroll-solve --method bem rejects bad input on stderr with exit 2",
           "[cli][bem]") {
-  const fs::path program = solve_program();
-  if (program.empty() || !fs::exists(program)) {
-    WARN("viscoroll-solve not built (" << program
-                                       << "); build the default target to run this test");
-    return;
-  }
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   struct Case {
     std::string args, message;
   };
@@ -121,7 +80,7 @@ TEST_CASE("cli: viscoroll-solve --method bem rejects bad input on stderr with ex
       {arguments() + " --grid 5", "--grid given twice"},
   };
   for (const auto& c : cases) {
-    const Run r = run(program, c.args);
+    const auto r = run(c.args);
     INFO("viscoroll-solve " << c.args << "\nstdout: " << r.out << "\nstderr: " << r.err);
     CHECK(r.status == 2);
     CHECK(r.out.empty());
@@ -131,13 +90,8 @@ TEST_CASE("cli: viscoroll-solve --method bem rejects bad input on stderr with ex
 
 TEST_CASE("cli: viscoroll-solve --method bem prints one converged JSON line per tau",
           "[cli][bem]") {
-  const fs::path program = solve_program();
-  if (program.empty() || !fs::exists(program)) {
-    WARN("viscoroll-solve not built (" << program
-                                       << "); build the default target to run this test");
-    return;
-  }
-  const Run r = run(program, arguments({"--tau=0,1"}));
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  const auto r = run(arguments({"--tau=0,1"}));
   INFO("stdout: " << r.out << "\nstderr: " << r.err);
   CHECK(r.status == 0);
   CHECK(r.err.empty());
@@ -155,15 +109,10 @@ TEST_CASE("cli: viscoroll-solve --method bem prints one converged JSON line per 
 
 TEST_CASE("cli: viscoroll-solve --method line prints the domain warning on stderr too",
           "[cli][line]") {
-  const fs::path program = solve_program();
-  if (program.empty() || !fs::exists(program)) {
-    WARN("viscoroll-solve not built (" << program
-                                       << "); build the default target to run this test");
-    return;
-  }
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   // C2/C1 = 0.3 makes a short contact (measured l/a(0) = 2.67 at V tau = C1 = 1): converged, exit
   // 0, the warning in the JSON and on stderr.
-  const Run r = run(program, arguments({"--method=line", "--c2=0.3", "--grid=4"}));
+  const auto r = run(arguments({"--method=line", "--c2=0.3", "--grid=4"}));
   INFO("stdout: " << r.out << "\nstderr: " << r.err);
   CHECK(r.status == 0);
   CHECK(r.out.find("\"converged\":true") != std::string::npos);
@@ -172,7 +121,7 @@ TEST_CASE("cli: viscoroll-solve --method line prints the domain warning on stder
       r.err.find("viscoroll-solve: warning: line solution for tau = 1: contact aspect l/a(0) = ") !=
       std::string::npos);
   // The paper's scene (l/a(0) = 4.6 at V tau = a0 = 1): no warning anywhere.
-  const Run ok = run(program, arguments({"--method=line", "--grid=4"}));
+  const auto ok = run(arguments({"--method=line", "--grid=4"}));
   INFO("stdout: " << ok.out << "\nstderr: " << ok.err);
   CHECK(ok.status == 0);
   CHECK(ok.err.empty());
