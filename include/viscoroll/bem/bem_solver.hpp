@@ -15,7 +15,7 @@
 // This header needs Eigen's unsupported FFT module; the umbrella header does not include it.
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <algorithm>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <chrono>
@@ -154,41 +154,14 @@ class BemSolver {
 
   /// The grid the solver uses for a scene: grid elements per semi-axis of the long-term static
   /// Hertz ellipse, odd counts covering `extent` semi-axes each way.
-  bem::BemGrid<Real> grid_for(const BemScene<Real>& scene) const {
-    const auto h = long_term_hertz(scene);
-    const int n = options_.grid;
-    const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
-    return {2 * m + 1, 2 * m + 1, h.a / Real(n), h.b / Real(n)};
-  }
+  bem::BemGrid<Real> grid_for(const BemScene<Real>& scene) const;
 
   /// Solves the scene; `start` (a solution on the same grid) seeds the active set and the
   /// pressure. Throws std::invalid_argument for an invalid scene; a non-converged iteration is
   /// returned with converged == false and the reason.
-  Solution solve(const BemScene<Real>& scene, const Solution* start = nullptr) const {
-    using clock = std::chrono::steady_clock;
-    scene.validate();
-    const auto t0 = clock::now();
-    const auto hertz = long_term_hertz(scene);
-    const auto grid = grid_for(scene);
-    if (scene.profile) validate_profile(scene, grid);
-    const auto terms = effective_terms(grid, scene.speed);
-    const Real c = material_.instantaneous_compliance();
-    const bem::InfluenceTable<Real> table(grid, c, terms, scene.speed);
-    const bem::ConvolutionOperator<Real> op(table);
-    const std::vector<Complex> symbol = preconditioner_symbol(grid, op, c, terms, scene.speed);
-    const double setup = std::chrono::duration<double>(clock::now() - t0).count();
-    Solution sol = iterate(scene, grid, hertz, op, symbol, terms, start);
-    sol.seconds_setup = setup;
-    sol.seconds_solve = std::chrono::duration<double>(clock::now() - t0).count() - setup;
-    return sol;
-  }
+  Solution solve(const BemScene<Real>& scene, const Solution* start = nullptr) const;
 
-  bem::HertzContact<Real> long_term_hertz(const BemScene<Real>& scene) const {
-    scene.validate();
-    return bem::hertz_contact(scene.c1, scene.c2,
-                              (1 + material_.creep_ratio()) * material_.instantaneous_compliance(),
-                              scene.load);
-  }
+  bem::HertzContact<Real> long_term_hertz(const BemScene<Real>& scene) const;
 
  private:
   /// The memory terms that act on the grid. A term whose memory length L = V tau_k is glassy on
@@ -533,7 +506,58 @@ class BemSolver {
   BemOptions options_;
 };
 
+template <RealScalar Real, bem::MemoryModel Material>
+requires std::same_as<typename Material::real_type, Real>
+auto BemSolver<Real, Material>::solve(const BemScene<Real>& scene, const Solution* start) const
+    -> Solution {
+  using clock = std::chrono::steady_clock;
+  scene.validate();
+  const auto t0 = clock::now();
+  const auto hertz = long_term_hertz(scene);
+  const auto grid = grid_for(scene);
+  if (scene.profile) validate_profile(scene, grid);
+  const auto terms = effective_terms(grid, scene.speed);
+  const Real c = material_.instantaneous_compliance();
+  const bem::InfluenceTable<Real> table(grid, c, terms, scene.speed);
+  const bem::ConvolutionOperator<Real> op(table);
+  const std::vector<Complex> symbol = preconditioner_symbol(grid, op, c, terms, scene.speed);
+  const double setup = std::chrono::duration<double>(clock::now() - t0).count();
+  Solution sol = iterate(scene, grid, hertz, op, symbol, terms, start);
+  sol.seconds_setup = setup;
+  sol.seconds_solve = std::chrono::duration<double>(clock::now() - t0).count() - setup;
+  return sol;
+}
+
+template <RealScalar Real, bem::MemoryModel Material>
+requires std::same_as<typename Material::real_type, Real>
+auto BemSolver<Real, Material>::grid_for(const BemScene<Real>& scene) const -> bem::BemGrid<Real> {
+  const auto h = long_term_hertz(scene);
+  const int n = options_.grid;
+  const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
+  return {2 * m + 1, 2 * m + 1, h.a / Real(n), h.b / Real(n)};
+}
+
+template <RealScalar Real, bem::MemoryModel Material>
+requires std::same_as<typename Material::real_type, Real>
+auto BemSolver<Real, Material>::long_term_hertz(const BemScene<Real>& scene) const
+    -> bem::HertzContact<Real> {
+  scene.validate();
+  return bem::hertz_contact(scene.c1, scene.c2,
+                            (1 + material_.creep_ratio()) * material_.instantaneous_compliance(),
+                            scene.load);
+}
+
 /// The common case: double precision, standard linear solid.
 using BemSolverD = BemSolver<double, StandardLinearSolid<double>>;
+
+// Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
+// viscoroll::compiled sets, the solvers below are instantiated once in that library (src/) and
+// not in the including translation unit. Their entry points are defined out of the class (not
+// inline), so that g++ does not instantiate them here for inlining either. Other instantiations
+// are implicit, as in header-only mode.
+#if defined(VISCOROLL_COMPILED)
+extern template class BemSolver<double, StandardLinearSolid<double>>;
+extern template class BemSolver<long double, StandardLinearSolid<long double>>;
+#endif
 
 }  // namespace viscoroll

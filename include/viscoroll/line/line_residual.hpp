@@ -28,7 +28,7 @@
 // K(s) is a series in 1/s^2 with the t-integral done once per point (docs/theory.md section 8).
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -11,7 +11,9 @@
 // (static_line_contact.hpp) with the long-term or the instantaneous compliance: no Bessel work.
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <chrono>
 #include <cmath>
 #include <concepts>
@@ -190,26 +192,7 @@ class LineSolver {
   /// Solves the scene; `start` (a solution of a nearby scene, same material) seeds the iteration.
   /// Throws std::invalid_argument for an invalid scene; a non-converged iteration is returned
   /// with converged == false and the reason.
-  Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const {
-    scene.validate();
-    const Real c = material_.instantaneous_compliance();
-    const Real f = material_.creep_ratio();
-    const Real vtau = scene.speed * material_.relaxation_time();
-    const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
-    const Real eps = std::numeric_limits<Real>::epsilon();
-    if constexpr (Material::is_viscoelastic) {
-      if (f > 0 && vtau > 0) {
-        if (strip_is_glassy(vtau, f, slow.a0)) {
-          // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
-          const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
-          // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
-          return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");
-        }
-        if (vtau > eps * slow.a0) return rolling(scene, slow, c, f, vtau, start);
-      }
-    }
-    return closed_form(scene, slow, slow, c, f, "static (closed form)");
-  }
+  Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const;
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
   LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const {
@@ -697,7 +680,41 @@ class LineSolver {
   LineOptions options_;
 };
 
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
+auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
+                                                   const Solution* start) const -> Solution {
+  scene.validate();
+  const Real c = material_.instantaneous_compliance();
+  const Real f = material_.creep_ratio();
+  const Real vtau = scene.speed * material_.relaxation_time();
+  const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  if constexpr (Material::is_viscoelastic) {
+    if (f > 0 && vtau > 0) {
+      if (strip_is_glassy(vtau, f, slow.a0)) {
+        // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
+        const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
+        // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
+        return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");
+      }
+      if (vtau > eps * slow.a0) return rolling(scene, slow, c, f, vtau, start);
+    }
+  }
+  return closed_form(scene, slow, slow, c, f, "static (closed form)");
+}
+
 /// The common case: double precision, standard linear solid, 12-point Gauss-Legendre panels.
 using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
+
+// Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
+// viscoroll::compiled sets, the solvers below are instantiated once in that library (src/) and
+// not in the including translation unit. Their entry points are defined out of the class (not
+// inline), so that g++ does not instantiate them here for inlining either. Other instantiations
+// are implicit, as in header-only mode.
+#if defined(VISCOROLL_COMPILED)
+extern template class LineSolver<double, StandardLinearSolid<double>>;
+extern template class LineSolver<long double, StandardLinearSolid<long double>>;
+#endif
 
 }  // namespace viscoroll

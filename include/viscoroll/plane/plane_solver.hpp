@@ -92,26 +92,7 @@ class PlaneSolver {
   const Material& material() const { return material_; }
 
   /// Solves the scene; throws std::invalid_argument for an invalid scene.
-  Solution solve(const PlaneScene<Real>& scene) const {
-    using std::sqrt;
-    scene.validate();
-    const Real c = material_.instantaneous_compliance();
-    const Real f = material_.creep_ratio();
-    const Real vtau = scene.speed * material_.relaxation_time();
-    // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
-    const Real a0 = sqrt(4 * c * (1 + f) * scene.load / scene.c1);
-    if constexpr (Material::is_viscoelastic) {
-      if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0) {
-        if (!glassy(vtau, f, a0)) return rolling(scene, c, f, vtau, a0);
-        // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
-        const Real a = sqrt(4 * c * scene.load / scene.c1);
-        return static_solution(scene, a, a0, c, Real(0));
-      }
-    }
-    // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic: Hertz
-    // with the long-term compliance, no Bessel work.
-    return static_solution(scene, a0, a0, c, f);
-  }
+  Solution solve(const PlaneScene<Real>& scene) const;
 
  private:
   Solution rolling(const PlaneScene<Real>& scene, Real c, Real f, Real vtau, Real a0) const {
@@ -192,7 +173,41 @@ class PlaneSolver {
   PlaneOptions options_;
 };
 
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
+auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scene) const
+    -> Solution {
+  using std::sqrt;
+  scene.validate();
+  const Real c = material_.instantaneous_compliance();
+  const Real f = material_.creep_ratio();
+  const Real vtau = scene.speed * material_.relaxation_time();
+  // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
+  const Real a0 = sqrt(4 * c * (1 + f) * scene.load / scene.c1);
+  if constexpr (Material::is_viscoelastic) {
+    if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0) {
+      if (!glassy(vtau, f, a0)) return rolling(scene, c, f, vtau, a0);
+      // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
+      const Real a = sqrt(4 * c * scene.load / scene.c1);
+      return static_solution(scene, a, a0, c, Real(0));
+    }
+  }
+  // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic: Hertz
+  // with the long-term compliance, no Bessel work.
+  return static_solution(scene, a0, a0, c, f);
+}
+
 /// The common case: double precision, standard linear solid, 24-point Gauss-Legendre panels.
 using PlaneSolverD = PlaneSolver<double, StandardLinearSolid<double>>;
+
+// Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
+// viscoroll::compiled sets, the solvers below are instantiated once in that library (src/) and
+// not in the including translation unit. Their entry points are defined out of the class (not
+// inline), so that g++ does not instantiate them here for inlining either. Other instantiations
+// are implicit, as in header-only mode.
+#if defined(VISCOROLL_COMPILED)
+extern template class PlaneSolver<double, StandardLinearSolid<double>>;
+extern template class PlaneSolver<long double, StandardLinearSolid<long double>>;
+#endif
 
 }  // namespace viscoroll

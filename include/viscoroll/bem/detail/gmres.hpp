@@ -3,7 +3,7 @@
 // of the boundary-element solver. Modified Gram-Schmidt Arnoldi, Givens rotations.
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <cmath>
 #include <vector>
 

@@ -1,0 +1,12 @@
+// viscoroll::compiled (docs/building.md, "Compiled mode"): one solver instantiated once,
+// LineSolver<long double, StandardLinearSolid<long double>>.
+// Compiled with VISCOROLL_COMPILED like its users, so that the other solvers' explicit
+// instantiation declarations keep them out of this file (they have files of their own).
+#include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+
+namespace viscoroll {
+
+template class LineSolver<long double, StandardLinearSolid<long double>>;
+
+}  // namespace viscoroll
