@@ -482,6 +482,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       "viscoroll: steady rolling of a rigid roller on a viscoelastic half space (Panek & Kalker "
       "1980).\n\nThe compiled part of the package `viscoroll`; see help(viscoroll).";
   m.attr("__version__") = VISCOROLL_PYTHON_VERSION;
+  m.attr("DEFAULT_CHUNK") = viscoroll::SweepOptions{}.chunk;  // sweep()'s default chunk
 
   // Materials.
   py::class_<vp::Material>(m, "Material",
@@ -732,6 +733,10 @@ PYBIND11_MODULE(_viscoroll, m) {
         return out;
       });
 
+  // solve() and sweep() are wrapped by the package's __init__.py (a Python signature for
+  // help()); their docstrings here carry the signature line themselves.
+  py::options options;
+  options.disable_function_signatures();
   m.def(
       "solve",
       [](const SceneSpec& scene, const std::optional<std::string>& method,

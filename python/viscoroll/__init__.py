@@ -40,6 +40,7 @@ Example
 Documentation: docs/python.md of the repository.
 """
 
+from . import _viscoroll
 from ._viscoroll import (
     Cylinder,
     Elastic,
@@ -50,9 +51,26 @@ from ._viscoroll import (
     Scene,
     StandardLinearSolid,
     __version__,
-    solve,
-    sweep,
 )
+
+
+def _doc(function):
+    """The compiled function's docstring without its leading signature line."""
+    signature, _, text = function.__doc__.strip().partition("\n\n")
+    return text
+
+
+def solve(scene, method=None, grid=None, speed=None, start=None):
+    return _viscoroll.solve(scene, method, grid, speed, start)
+
+
+def sweep(scene, speeds=None, method=None, grid=None, threads=None,
+          chunk=_viscoroll.DEFAULT_CHUNK, with_results=False):
+    return _viscoroll.sweep(scene, speeds, method, grid, threads, chunk, with_results)
+
+
+solve.__doc__ = _doc(_viscoroll.solve)
+sweep.__doc__ = _doc(_viscoroll.sweep)
 
 __all__ = [
     "Cylinder",
