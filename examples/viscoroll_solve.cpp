@@ -3,7 +3,8 @@
 // converge (or the plot failed), 2 bad input (message on stderr, nothing on stdout).
 // The scene comes from options (--mu-d --nu --f --tau --c1 --c2 --load --speed) or from a scene
 // file in SI units (--scene FILE.json, examples/cli/scene_file.hpp). For each tau, each speed is
-// solved in the given order; line and bem continue from the previous converged solution.
+// solved by viscoroll::sweep on --threads threads: in chunks of 16 in the given order, line and
+// bem continuing from the previous converged solution of the chunk (any thread count, same result).
 // --method plane: Hunter's plane problem (load per unit length, c2 ignored).
 // --method line: the line-contact solver (--grid N the Chebyshev terms, default 6); each line
 // also carries l, y_minus, y_plus, d, l0, d0 (the static long-term l and d), terms, reason and
@@ -34,6 +35,7 @@
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
+#include <viscoroll/sweep.hpp>
 
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
@@ -229,12 +231,15 @@ class Output {
       csv->flush();
     }
     if (count_ == 1) header_ = csv_header(r);
-    if (progress_) {
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-      std::fprintf(stderr, "viscoroll-solve: speed %zu of %zu, elapsed %.1f s\n", count_, total_,
-                   elapsed);
-    }
+  }
+
+  /// Progress on stderr when it is a terminal: `done` solves of the whole run are finished.
+  void progress(std::size_t done) const {
+    if (!progress_) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::fprintf(stderr, "viscoroll-solve: speed %zu of %zu, elapsed %.1f s\n", done, total_,
+                 elapsed);
   }
 
   /// Closes the files and draws the plot; false (with a message) if gnuplot failed.
@@ -351,10 +356,11 @@ struct Problem {
   double load = 0;
   std::vector<double> speeds;
   std::optional<long> grid;
+  unsigned threads = 0;  ///< of the speed sweep (0: every core)
 };
 
 Problem from_options(const SolveOptions& o) {
-  return {*o.method, o.mu_d, o.nu, o.f, o.tau, o.c1, o.c2, o.load, o.speeds, o.grid};
+  return {*o.method, o.mu_d, o.nu, o.f, o.tau, o.c1, o.c2, o.load, o.speeds, o.grid, o.threads};
 }
 
 Problem from_scene(const SolveOptions& o) {
@@ -370,6 +376,7 @@ Problem from_scene(const SolveOptions& o) {
   Problem p;
   p.method = *method;
   p.grid = o.grid ? o.grid : scene.grid;
+  p.threads = o.threads;
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
   std::visit(
@@ -403,6 +410,48 @@ std::string label(const Problem& p, double tau, double speed) {
   return "tau = " + shortest(tau) + (p.speeds.size() > 1 ? ", speed = " + shortest(speed) : "");
 }
 
+/// A solver whose solutions carry the wall time of their solve (the output's `seconds`), in the
+/// shape viscoroll::sweep takes: the seed is passed on to solvers that take one.
+template <class Solver>
+struct Timed {
+  struct Solution {
+    typename Solver::Solution s;
+    double seconds;
+    bool converged;  ///< s.converged, and
+    int iterations;  ///< s.iterations, for the sweep's choice of seed
+  };
+  const Solver& solver;
+
+  template <class Scene>
+  Solution solve(const Scene& scene, const Solution* seed) const {
+    const auto start = std::chrono::steady_clock::now();
+    auto s = [&] {
+      if constexpr (requires { solver.solve(scene, &seed->s); })
+        return solver.solve(scene, seed != nullptr ? &seed->s : nullptr);
+      else
+        return solver.solve(scene);
+    }();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const bool converged = s.converged;
+    const int iterations = s.iterations;
+    return {std::move(s), seconds, converged, iterations};
+  }
+};
+
+/// Solves `scene` at every speed of the problem with `solver` by viscoroll::sweep (chunks of
+/// continuation on --threads threads; the result does not depend on the thread count), after
+/// `done` solves of earlier taus (for the progress line).
+template <class Solver, class Scene>
+std::vector<typename Timed<Solver>::Solution> sweep_speeds(const Solver& solver, const Scene& scene,
+                                                           const Problem& p, const Output& out,
+                                                           std::size_t done) {
+  viscoroll::SweepOptions options;
+  options.threads = p.threads;
+  options.progress = [&out, done](std::size_t k, std::size_t) { out.progress(done + k); };
+  return viscoroll::sweep(Timed<Solver>{solver}, scene, p.speeds, options);
+}
+
 int run_plane(const Problem& p, Output& out) {
   using Solver = viscoroll::PlaneSolverD;
   std::vector<viscoroll::PlaneScene<double>> scenes;
@@ -415,13 +464,13 @@ int run_plane(const Problem& p, Output& out) {
     solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau));
   out.open();
   bool all_converged = true;
-  for (std::size_t i = 0; i < solvers.size(); ++i)
-    for (const auto& scene : scenes) {
-      const auto start = std::chrono::steady_clock::now();
-      const auto s = solvers[i].solve(scene);
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const auto& scene = scenes[k];
+      const auto& s = results[k].s;
+      const double seconds = results[k].seconds;
       const auto peak = s.peak();
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       all_converged = all_converged && s.converged;
       out.add({{"method", std::string("plane")},
                {"tau", p.tau[i]},
@@ -441,6 +490,7 @@ int run_plane(const Problem& p, Output& out) {
         std::cerr << "viscoroll-solve: plane solution for " << label(p, p.tau[i], scene.speed)
                   << " did not converge\n";
     }
+  }
   return all_converged ? 0 : 1;
 }
 
@@ -455,9 +505,9 @@ int line_terms(const Problem& p) {
   return static_cast<int>(n);
 }
 
-/// The line-contact (3-D) solver; for each tau the speeds are solved in the given order, each
-/// seeded with the previous converged iterated solution (continuation; a closed form carries no
-/// more than the solver's own seed, so it is not passed on).
+/// The line-contact (3-D) solver; for each tau the speeds are swept by viscoroll::sweep: in chunks
+/// of 16 in the given order, each speed seeded with the previous converged iterated solution of
+/// its chunk (continuation; a closed form carries no more than the solver's own seed).
 int run_line(const Problem& p, Output& out) {
   using Solver = viscoroll::LineSolverD;
   using Solution = Solver::Solution;
@@ -476,16 +526,13 @@ int run_line(const Problem& p, Output& out) {
     solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau), options);
   out.open();
   bool all_converged = true;
-  std::optional<Solution> previous;
-  for (std::size_t i = 0; i < solvers.size(); ++i)
-    for (const auto& scene : scenes) {
-      const auto start = std::chrono::steady_clock::now();
-      const Solution* seed =
-          previous && previous->converged && previous->iterations > 0 ? &*previous : nullptr;
-      Solution s = solvers[i].solve(scene, seed);
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const auto& scene = scenes[k];
+      const Solution& s = results[k].s;
+      const double seconds = results[k].seconds;
       const auto peak = s.strip(0.0).peak();
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       all_converged = all_converged && s.converged;
       out.add({{"method", std::string("line")},
                {"tau", p.tau[i]},
@@ -517,8 +564,8 @@ int run_line(const Problem& p, Output& out) {
       if (!s.converged)
         std::cerr << "viscoroll-solve: line solution for " << which
                   << " did not converge: " << s.reason << "\n";
-      previous = std::move(s);
     }
+  }
   return all_converged ? 0 : 1;
 }
 
@@ -534,7 +581,8 @@ int bem_grid(const Problem& p) {
 }
 
 /// The boundary-element solver; every solve shares one grid (it is sized by the static
-/// long-term contact), and each starts from the previous converged contact.
+/// long-term contact), and the speeds are swept as the line method's are, each seeded with the
+/// previous converged contact of its chunk.
 int run_bem(const Problem& p, Output& out) {
   using Solver = viscoroll::BemSolverD;
   using Solution = viscoroll::BemSolution<double>;
@@ -553,14 +601,12 @@ int run_bem(const Problem& p, Output& out) {
     solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau), options);
   out.open();
   bool all_converged = true;
-  std::optional<Solution> previous;
-  for (std::size_t i = 0; i < solvers.size(); ++i)
-    for (const auto& scene : scenes) {
-      const auto start = std::chrono::steady_clock::now();
-      const Solution* seed = previous && previous->converged ? &*previous : nullptr;
-      Solution s = solvers[i].solve(scene, seed);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const auto& scene = scenes[k];
+      const Solution& s = results[k].s;
+      const double seconds = results[k].seconds;
       all_converged = all_converged && s.converged;
       std::size_t peak = 0;
       for (std::size_t q = 0; q < s.pressure.size(); ++q)
@@ -597,8 +643,8 @@ int run_bem(const Problem& p, Output& out) {
       if (!s.converged)
         std::cerr << "viscoroll-solve: bem solution for " << which
                   << " did not converge: " << s.reason << "\n";
-      previous = std::move(s);
     }
+  }
   return all_converged ? 0 : 1;
 }
 

@@ -49,16 +49,17 @@ struct SolveOptions {
   std::optional<long> grid;    ///< discretisation size (line: terms; bem: elements per semi-axis)
   std::string scene;           ///< --scene FILE: the material, the roller, the load and speeds
   Format format = Format::json;
-  std::string csv;   ///< --csv FILE: the sweep as CSV too (empty: none)
-  std::string plot;  ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
+  std::string csv;       ///< --csv FILE: the sweep as CSV too (empty: none)
+  std::string plot;      ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
+  unsigned threads = 0;  ///< --threads N: threads of the speed sweep (0: every core)
 };
 
 inline std::string usage() {
   return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
-         "[--csv FILE] [--plot DIR]\n"
+         "[--csv FILE] [--plot DIR] [--threads N]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
-         "[--speed V[,V...]] [--format json|table] [--csv FILE] [--plot DIR]";
+         "[--speed V[,V...]] [--format json|table] [--csv FILE] [--plot DIR] [--threads N]";
 }
 
 /// A finite number, the whole of `text`.
@@ -89,8 +90,8 @@ inline std::vector<double> parse_numbers(std::string_view option, std::string_vi
 /// which names the parameter.
 inline SolveOptions parse_solve_options(const std::vector<std::string_view>& args) {
   static const std::set<std::string_view> known = {
-      "--method", "--mu-d", "--nu",   "--f",     "--tau",    "--speed", "--c1",
-      "--c2",     "--load", "--grid", "--scene", "--format", "--csv",   "--plot"};
+      "--method", "--mu-d", "--nu",    "--f",      "--tau", "--speed", "--c1",     "--c2",
+      "--load",   "--grid", "--scene", "--format", "--csv", "--plot",  "--threads"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -130,7 +131,7 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
         throw std::invalid_argument(
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
-            "--grid, --speed, --format, --csv and --plot may go with it)");
+            "--grid, --speed, --format, --csv, --plot and --threads may go with it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -159,6 +160,16 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
       throw std::invalid_argument("viscoroll-solve: --grid expects a positive integer, got '" +
                                   std::string(text) + "'");
     o.grid = n;
+  }
+  if (given.count("--threads")) {
+    const std::string_view text = given["--threads"];
+    unsigned n = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || n > 4096)
+      throw std::invalid_argument(
+          "viscoroll-solve: --threads expects an integer 0 <= N <= 4096 (0: every core), got '" +
+          std::string(text) + "'");
+    o.threads = n;
   }
   if (given.count("--format")) {
     const std::string_view format = given["--format"];

@@ -162,3 +162,29 @@ TEST_CASE("cli: an elastic scene runs with every method, as options with f = 0 a
     }
   }
 }
+
+TEST_CASE("cli: --threads changes who solves, not what: 1 and 2 threads print the same sweep",
+          "[cli][scene]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  const std::string paper = (scenes_dir() / "paper.json").string();
+  const Run one = run({"--scene", paper, "--grid", "3", "--threads", "1"});
+  const Run two = run({"--scene", paper, "--grid", "3", "--threads", "2"});
+  INFO("stderr: " << one.err << two.err);
+  REQUIRE(one.status == 0);
+  REQUIRE(two.status == 0);
+  auto a = json_lines(one.out), b = json_lines(two.out);
+  REQUIRE(a.size() == 25);  // more than one chunk of 16: both threads have work
+  REQUIRE(a.size() == b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    a[k].erase("seconds");
+    b[k].erase("seconds");
+    CHECK(a[k].dump() == b[k].dump());
+  }
+  for (const char* bad : {"-1", "4097", "two", ""}) {
+    const Run r = run({"--scene", paper, "--threads", bad});
+    INFO("--threads " << bad << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("--threads") != std::string::npos);
+  }
+}
