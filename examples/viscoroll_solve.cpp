@@ -215,7 +215,22 @@ class Output {
     start_ = std::chrono::steady_clock::now();
   }
 
-  void add(const Record& r) {
+  /// Keeps a result; nothing is printed until flush(), so that a run that fails (exit 2: a
+  /// solve rejected its input) prints nothing on stdout, and every line printed stands.
+  void add(Record r) { pending_.push_back(std::move(r)); }
+  /// Keeps a message for stderr (a warning, a solve that did not converge), printed by flush().
+  void note(std::string message) { notes_.push_back(std::move(message)); }
+
+  /// Prints the kept results (stdout, the CSV files) and then the messages (stderr).
+  void flush() {
+    for (const Record& r : pending_) emit(r);
+    pending_.clear();
+    for (const std::string& m : notes_) std::cerr << m << "\n";
+    notes_.clear();
+  }
+
+ private:
+  void emit(const Record& r) {
     ++count_;
     if (options_.format == Format::json) {
       std::cout << json_line(r) << "\n";
@@ -233,6 +248,7 @@ class Output {
     if (count_ == 1) header_ = csv_header(r);
   }
 
+ public:
   /// Progress on stderr when it is a terminal: `done` solves of the whole run are finished.
   void progress(std::size_t done) const {
     if (!progress_) return;
@@ -244,6 +260,7 @@ class Output {
 
   /// Closes the files and draws the plot; false (with a message) if gnuplot failed.
   bool finish() {
+    flush();
     if (csv_.is_open()) csv_.close();
     if (!plot_csv_.is_open()) return true;
     plot_csv_.close();
@@ -344,6 +361,8 @@ class Output {
   fs::path gnuplot_;
   bool progress_ = false;
   std::chrono::steady_clock::time_point start_;
+  std::vector<Record> pending_;
+  std::vector<std::string> notes_;
 };
 
 /// The scene as the solvers take it, from options or from a scene file.
@@ -487,8 +506,8 @@ int run_plane(const Problem& p, Output& out) {
                {"iterations", static_cast<long long>(s.iterations)},
                {"residual", s.residual}});
       if (!s.converged)
-        std::cerr << "viscoroll-solve: plane solution for " << label(p, p.tau[i], scene.speed)
-                  << " did not converge\n";
+        out.note("viscoroll-solve: plane solution for " + label(p, p.tau[i], scene.speed) +
+                 " did not converge");
     }
   }
   return all_converged ? 0 : 1;
@@ -560,10 +579,9 @@ int run_line(const Problem& p, Output& out) {
                {"warnings", s.warnings}});
       const std::string which = label(p, p.tau[i], scene.speed);
       for (const auto& w : s.warnings)
-        std::cerr << "viscoroll-solve: warning: line solution for " << which << ": " << w << "\n";
+        out.note("viscoroll-solve: warning: line solution for " + which + ": " + w);
       if (!s.converged)
-        std::cerr << "viscoroll-solve: line solution for " << which
-                  << " did not converge: " << s.reason << "\n";
+        out.note("viscoroll-solve: line solution for " + which + " did not converge: " + s.reason);
     }
   }
   return all_converged ? 0 : 1;
@@ -639,10 +657,9 @@ int run_bem(const Problem& p, Output& out) {
                {"warnings", s.warnings}});
       const std::string which = label(p, p.tau[i], scene.speed);
       for (const auto& w : s.warnings)
-        std::cerr << "viscoroll-solve: warning: bem solution for " << which << ": " << w << "\n";
+        out.note("viscoroll-solve: warning: bem solution for " + which + ": " + w);
       if (!s.converged)
-        std::cerr << "viscoroll-solve: bem solution for " << which
-                  << " did not converge: " << s.reason << "\n";
+        out.note("viscoroll-solve: bem solution for " + which + " did not converge: " + s.reason);
     }
   }
   return all_converged ? 0 : 1;

@@ -188,3 +188,21 @@ TEST_CASE("cli: --threads changes who solves, not what: 1 and 2 threads print th
     CHECK(r.err.find("--threads") != std::string::npos);
   }
 }
+
+TEST_CASE("cli: a run that fails prints nothing on stdout; one that prints, stands", "[cli]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // The second tau is fine; the first sends the plane solver's Bessel ratios outside their
+  // domain (V tau = 1e8 with a0 ~ 1e-1: a defect of the solver's scaling, not of the input). The
+  // run either solves both (exit 0, two lines) or fails (exit 2, nothing on stdout): never
+  // lines and then exit 2.
+  const Run r = run({"--method", "plane", "--mu-d", "1", "--nu", "0.5", "--f", "9", "--tau",
+                     "1e-300,1", "--speed", "1e308", "--c1", "1", "--load", "0.01"});
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  if (r.status == 0) {
+    CHECK(json_lines(r.out).size() == 2);
+  } else {
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(!r.err.empty());
+  }
+}
