@@ -99,3 +99,20 @@ def test_scene_from_json_reads_what_the_command_line_reads(scenes_dir):
     assert scene.speeds.dtype == np.float64 and scene.speeds.shape == (25,)
     cylinder = vr.Scene.from_json(str(scenes_dir / "polyamide_cylinder.json"))
     assert isinstance(cylinder.roller, vr.Cylinder) and cylinder.method == "plane"
+
+
+@pytest.mark.parametrize("method,grid", [("plane", None), ("line", None), ("bem", 6)])
+def test_an_elastic_scene_matches_the_command_line(viscoroll_solve, tmp_path, method, grid):
+    """An elastic material (no shipped scene has one), as a scene file and as Python objects."""
+    document = {"material": {"model": "elastic", "mu": 1.0e6, "nu": 0.3},
+                "roller": {"profile": "ellipsoid", "c1": 20.0, "c2": 1.0}, "load": 10.0,
+                "speeds": [0.0, 1.0]}
+    path = tmp_path / "elastic.json"
+    path.write_text(json.dumps(document))
+    expected = run_cli(viscoroll_solve, path, method, grid, [1.0])[0]
+    built = vr.Scene(material=vr.Elastic(mu=1.0e6, nu=0.3), roller=vr.Ellipsoid(c1=20.0, c2=1.0),
+                     load=10.0)
+    for scene in (vr.Scene.from_json(path), built):
+        result = vr.solve(scene, method=method, grid=grid, speed=1.0)
+        compare(expected, result.as_dict(), f"elastic {method}")
+        assert result.tau == 0.0
