@@ -20,9 +20,12 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string_view a = argv[i];
     const long v = std::strtol(argv[i + 1], nullptr, 10);
-    if (a == "--speeds") speeds = static_cast<int>(std::max(1L, v));
-    else if (a == "--repeats") repeats = static_cast<int>(std::max(1L, v));
-    else if (a == "--threads") threads = static_cast<unsigned>(std::max(0L, v));
+    if (a == "--speeds")
+      speeds = static_cast<int>(std::max(1L, v));
+    else if (a == "--repeats")
+      repeats = static_cast<int>(std::max(1L, v));
+    else if (a == "--threads")
+      threads = static_cast<unsigned>(std::max(0L, v));
     else {
       std::fprintf(stderr, "usage: sweep_timing [--speeds N] [--repeats R] [--threads T]\n");
       return 2;
@@ -37,8 +40,7 @@ int main(int argc, char** argv) {
   const viscoroll::LineSolverD solver(material, line);
   std::vector<double> v(static_cast<std::size_t>(speeds));
   for (int i = 0; i < speeds; ++i)
-    v[static_cast<std::size_t>(i)] =
-        std::pow(10.0, -2 + 4.0 * i / std::max(1, speeds - 1)) / tau;
+    v[static_cast<std::size_t>(i)] = std::pow(10.0, -2 + 4.0 * i / std::max(1, speeds - 1)) / tau;
   viscoroll::SweepOptions options;
   options.threads = threads;
   std::vector<double> times, cpu;
@@ -46,10 +48,9 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t c0 = std::clock();
-    const auto out = viscoroll::sweep(solver, viscoroll::LineScene<double>{c1, c2, load, 0.0}, v,
-                                      options);
-    times.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    const auto out =
+        viscoroll::sweep(solver, viscoroll::LineScene<double>{c1, c2, load, 0.0}, v, options);
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
     converged = static_cast<int>(
         std::count_if(out.begin(), out.end(), [](const auto& s) { return s.converged; }));
@@ -57,9 +58,10 @@ int main(int argc, char** argv) {
   }
   std::sort(times.begin(), times.end());
   std::sort(cpu.begin(), cpu.end());
-  std::printf("C++ sweep: %d speeds, threads %u (effective %u), chunk %zu: median %.4f s (cpu "
-              "%.4f s), %d converged\n",
-              speeds, threads, options.effective_threads((v.size() + 15) / 16), options.chunk,
-              times[times.size() / 2], cpu[cpu.size() / 2], converged);
+  std::printf(
+      "C++ sweep: %d speeds, threads %u (effective %u), chunk %zu: median %.4f s (cpu "
+      "%.4f s), %d converged\n",
+      speeds, threads, options.effective_threads((v.size() + 15) / 16), options.chunk,
+      times[times.size() / 2], cpu[cpu.size() / 2], converged);
   return 0;
 }

@@ -139,9 +139,9 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 // viscoroll::sweep over `speeds`; called with the GIL released.
 std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
                                    const SweepOptions& options);
-std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds,
-                                  int terms, const SweepOptions& options);
-std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds,
-                                 int grid, const SweepOptions& options);
+std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
+                                  const SweepOptions& options);
+std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
+                                 const SweepOptions& options);
 
 }  // namespace viscoroll::python

@@ -276,8 +276,8 @@ py::array_t<double> as_array(const std::vector<double>& values) {
   return out;
 }
 
-SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid,
-                      double speed, const Result* start) {
+SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid, double speed,
+                      const Result* start) {
   const int n = check_for_method(scene, method, grid);
   const Solved* seed = start ? start->solved.get() : nullptr;
   switch (method) {
@@ -342,8 +342,7 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"y_minus", "Lower end of the contact along the axis, -l (line, bem)."},
       {"y_plus", "Upper end of the contact along the axis, +l (line, bem)."},
       {"d", "Penetration (line, bem)."},
-      {"a_long_term",
-       "a0 of the static (V tau = 0) long-term contact; bem: of its Hertz ellipse."},
+      {"a_long_term", "a0 of the static (V tau = 0) long-term contact; bem: of its Hertz ellipse."},
       {"l0", "l of the static long-term contact (line, bem)."},
       {"d0", "d of the static long-term contact (line, bem)."},
       {"chi", "Rolling-friction coefficient (Eq. 51/54)."},
@@ -521,8 +520,7 @@ PYBIND11_MODULE(_viscoroll, m) {
            }),
            py::arg("mu_d"), py::arg("nu"), py::arg("f"), py::arg("tau"))
       .def_property_readonly(
-          "mu_d", [](const vp::Material& s) { return s.spec.mu_d; },
-          "Instantaneous shear modulus.")
+          "mu_d", [](const vp::Material& s) { return s.spec.mu_d; }, "Instantaneous shear modulus.")
       .def_property_readonly(
           "f", [](const vp::Material& s) { return s.spec.f; }, "Creep ratio of Eq. (1).")
       .def_property_readonly(
@@ -591,8 +589,7 @@ PYBIND11_MODULE(_viscoroll, m) {
              check_speeds(s.speeds);
              return s;
            }),
-           py::arg("material"), py::arg("roller"), py::arg("load"),
-           py::arg("speeds") = py::none())
+           py::arg("material"), py::arg("roller"), py::arg("load"), py::arg("speeds") = py::none())
       .def_static(
           "from_json",
           [](const py::object& path) {
@@ -675,34 +672,32 @@ PYBIND11_MODULE(_viscoroll, m) {
           "as_dict",
           [](const Result& r) {
             py::dict out;
-            for (const auto& [key, value] : r.solved->record()) out[py::str(key)] = to_python(value);
+            for (const auto& [key, value] : r.solved->record())
+              out[py::str(key)] = to_python(value);
             return out;
           },
           "The output fields as a dict, in the command line's JSON order.")
-      .def(
-          "pressure",
-          py::vectorize([](const Result* r, double x, double y) { return r->solved->pressure(x, y); }),
-          py::arg("x"), py::arg("y"),
-          "pressure(x, y) -> ndarray\n\nThe contact pressure p(x, y) (Eq. 35), 0 outside the "
-          "contact; x in the rolling\ndirection from the roller's axis (the frame moves with the "
-          "roller, towards +x), y along\nthe axis. x and y broadcast (NumPy rules); float64 out; "
-          "scalars give a float.\nplane: p(x) for any y. bem: the pressure of the cell holding "
-          "(x, y).")
-      .def(
-          "a", py::vectorize([](const Result* r, double y) { return r->solved->a(y); }),
-          py::arg("y"),
-          "a(y) -> ndarray\n\nHalf width of the contact strip at y (plane: a for every y). Not "
-          "for bem (ValueError).")
-      .def(
-          "b", py::vectorize([](const Result* r, double y) { return r->solved->b(y); }),
-          py::arg("y"),
-          "b(y) -> ndarray\n\nOffset of the strip's centre ahead of the axis at y (plane: b). "
-          "Not for bem.")
-      .def(
-          "f0", py::vectorize([](const Result* r, double y) { return r->solved->f0(y); }),
-          py::arg("y"),
-          "f0(y) -> ndarray\n\nF0(y) of Eq. (33), the strip's integral of the pseudo-pressure "
-          "(plane: F0 of Eq. 52).\nNot for bem.")
+      .def("pressure", py::vectorize([](const Result* r, double x, double y) {
+             return r->solved->pressure(x, y);
+           }),
+           py::arg("x"), py::arg("y"),
+           "pressure(x, y) -> ndarray\n\nThe contact pressure p(x, y) (Eq. 35), 0 outside the "
+           "contact; x in the rolling\ndirection from the roller's axis (the frame moves with the "
+           "roller, towards +x), y along\nthe axis. x and y broadcast (NumPy rules); float64 out; "
+           "scalars give a float.\nplane: p(x) for any y. bem: the pressure of the cell holding "
+           "(x, y).")
+      .def("a", py::vectorize([](const Result* r, double y) { return r->solved->a(y); }),
+           py::arg("y"),
+           "a(y) -> ndarray\n\nHalf width of the contact strip at y (plane: a for every y). Not "
+           "for bem (ValueError).")
+      .def("b", py::vectorize([](const Result* r, double y) { return r->solved->b(y); }),
+           py::arg("y"),
+           "b(y) -> ndarray\n\nOffset of the strip's centre ahead of the axis at y (plane: b). "
+           "Not for bem.")
+      .def("f0", py::vectorize([](const Result* r, double y) { return r->solved->f0(y); }),
+           py::arg("y"),
+           "f0(y) -> ndarray\n\nF0(y) of Eq. (33), the strip's integral of the pseudo-pressure "
+           "(plane: F0 of Eq. 52).\nNot for bem.")
       .def(
           "cell_pressures",
           [](const Result& r) {
@@ -710,8 +705,8 @@ PYBIND11_MODULE(_viscoroll, m) {
             if (!bem_cells(*r.solved, x, y, p))
               throw std::invalid_argument(
                   "viscoroll: cell_pressures() is for results of the bem method");
-            py::array_t<double> grid({static_cast<py::ssize_t>(y.size()),
-                                      static_cast<py::ssize_t>(x.size())});
+            py::array_t<double> grid(
+                {static_cast<py::ssize_t>(y.size()), static_cast<py::ssize_t>(x.size())});
             std::copy(p.begin(), p.end(), grid.mutable_data());
             return py::make_tuple(as_array(x), as_array(y), grid);
           },
@@ -725,11 +720,10 @@ PYBIND11_MODULE(_viscoroll, m) {
         };
         const Value* c = r.solved->find("converged");
         std::string out = std::string("Result(method='") + method_name(r.solved->method()) +
-                          "', speed=" + real("speed") + ", a0=" + real("a0") +
-                          ", b0=" + real("b0");
+                          "', speed=" + real("speed") + ", a0=" + real("a0") + ", b0=" + real("b0");
         if (r.solved->find("l")) out += ", l=" + real("l") + ", d=" + real("d");
-        out += ", chi=" + real("chi") + ", converged=" +
-               (c && std::get<bool>(*c) ? "True" : "False") + ")";
+        out += ", chi=" + real("chi") +
+               ", converged=" + (c && std::get<bool>(*c) ? "True" : "False") + ")";
         return out;
       });
 
@@ -739,8 +733,8 @@ PYBIND11_MODULE(_viscoroll, m) {
   options.disable_function_signatures();
   m.def(
       "solve",
-      [](const SceneSpec& scene, const std::optional<std::string>& method,
-         std::optional<long> grid, std::optional<double> speed, const Result* start) {
+      [](const SceneSpec& scene, const std::optional<std::string>& method, std::optional<long> grid,
+         std::optional<double> speed, const Result* start) {
         const Method which = method_for(scene, method);
         double v = 0;
         if (speed) {
@@ -748,10 +742,9 @@ PYBIND11_MODULE(_viscoroll, m) {
         } else if (scene.speeds.size() == 1) {
           v = scene.speeds.front();
         } else {
-          throw std::invalid_argument(
-              "viscoroll: solve() needs one speed: the scene has " +
-              std::to_string(scene.speeds.size()) +
-              " speeds; give speed=V, or call sweep() for several");
+          throw std::invalid_argument("viscoroll: solve() needs one speed: the scene has " +
+                                      std::to_string(scene.speeds.size()) +
+                                      " speeds; give speed=V, or call sweep() for several");
         }
         viscoroll::detail::require_non_negative("speed", v);
         SolvedPtr solved;
@@ -809,7 +802,7 @@ PYBIND11_MODULE(_viscoroll, m) {
         return out;
       },
       py::arg("scene"), py::arg("speeds") = py::none(), py::arg("method") = py::none(),
-      py::arg("grid") = py::none(), py::arg("threads") = py::none(), py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
-      py::arg("with_results") = false,
-      sweep_doc);
+      py::arg("grid") = py::none(), py::arg("threads") = py::none(),
+      py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
+      py::arg("with_results") = false, sweep_doc);
 }

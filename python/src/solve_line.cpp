@@ -85,8 +85,8 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solv
   return std::make_shared<LineSolved>(std::move(s), scene.material.tau, speed, terms, seconds);
 }
 
-std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds,
-                                  int terms, const SweepOptions& options) {
+std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
+                                  const SweepOptions& options) {
   const Solver solver = make_solver(scene, terms);
   LineScene<double> at = line_scene(scene, 0.0);
   for (const double v : speeds) line_scene(scene, v);  // every speed checked before any work
