@@ -556,6 +556,7 @@ using BemSolverD = BemSolver<double, StandardLinearSolid<double>>;
 // inline), so that g++ does not instantiate them here for inlining either. Other instantiations
 // are implicit, as in header-only mode.
 #if defined(VISCOROLL_COMPILED)
+extern template class BemSolver<float, StandardLinearSolid<float>>;
 extern template class BemSolver<double, StandardLinearSolid<double>>;
 extern template class BemSolver<long double, StandardLinearSolid<long double>>;
 #endif

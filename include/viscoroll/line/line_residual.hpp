@@ -39,6 +39,7 @@
 #include <viscoroll/line/detail/memory_kernel_series.hpp>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
+#include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
@@ -138,26 +139,7 @@ class LineResidual {
   /// in b / a_ref), the load by its target. Returns false
   /// (and leaves r unspecified) where the equations are undefined: a leading edge x0 = a + b <= 0
   /// or a non-finite value.
-  bool operator()(const Vector& x, Vector& r) const {
-    r.resize(equations());
-    const LineShape<Real> s = shape(x);
-    const Real d = penetration(x);
-    const int m = points();
-    for (int i = 0; i < m; ++i) {
-      Real r34 = 0, rle = 0;
-      if (!at_point(s, d, t_[i] * s.l, r34, rle)) return false;
-      // (34) depends on b through C1 V b, the leading-edge condition through its slope C1 V (as
-      // V tau >> a): adding V/a_ref times the latter (scaled to an error in b/a_ref) cancels the b
-      // dependence of (34) to first order, so that (34) speaks for a, l and d at every speed. A row
-      // operation: the solution is unchanged, the Jacobian's condition number no longer grows as V.
-      r[i] = r34 + p_.vtau / p_.a_ref * rle;
-      r[m + i] = rle;
-    }
-    r[2 * m] = load(s) / p_.load_target - 1;
-    for (int i = 0; i < r.size(); ++i)
-      if (!(boost::math::isfinite)(r[i])) return false;
-    return true;
-  }
+  bool operator()(const Vector& x, Vector& r) const;
 
   /// int_{-l}^{l} F0 dy (Eq. 47).
   Real load(const LineShape<Real>& s) const {
@@ -196,105 +178,7 @@ class LineResidual {
   /// held fixed in t = y/l; the kernels' dependence on the leading edge x0 = a + b and on l is
   /// differentiated in the same pass as the kernels (exterior_right's KernelSlopes). Exterior form
   /// (L6) only; returns false where operator() would, or for the paper's form.
-  bool jacobian(const Vector& x, Vector& r, Matrix& jac) const {
-    using std::log;
-    if (form_ != LeadingEdgeForm::exterior) return false;
-    const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
-    r.resize(equations());
-    jac.setZero(equations(), nu);
-    const LineShape<Real> s = shape(x);
-    const Real d = penetration(x), c1 = p_.c1, v = p_.vtau;
-    const Real scale34 = c1 * p_.a_ref * p_.a_ref;
-    Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu);
-    for (int i = 0; i < m; ++i) {
-      const Real t = t_[i], y = t * s.l;
-      const auto dh = strip_derivatives(s.a(y), s.b(y));
-      const auto& here = dh.value;
-      const Real a = here.a, b = here.b, x0 = a + b;
-      if (!(a > 0) || !(x0 > 0)) return false;
-      shape_gradient(s, y, a, da_i, db_i);
-      df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
-      dq_i = dh.q_a * da_i + dh.q_b * db_i;
-      PointNodes nd;
-      point_nodes(s, y, x0, nd);
-      const std::size_t count = nd.yp.size();
-      std::vector<Real> df0(count), dq(count), wq(count);
-      dlhs.setZero();
-      dright.setZero();
-      Vector dan(nu), dbn(nu);
-      std::vector<StripDerivatives> dn(count);
-      for (std::size_t j = 0; j < count; ++j) {
-        dn[j] = strip_derivatives(s.a(nd.yp[j]), s.b(nd.yp[j]));
-        df0[j] = dn[j].value.f0 - here.f0;
-        dq[j] = dn[j].value.q - here.q;
-      }
-      Real ends = 0;
-      KernelSlopes slopes;
-      const Real right = exterior_right(nd, dq, here.q, x0, &wq, &ends, &slopes);
-      Real r34 = 0, rle = 0;
-      const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
-      r[i] = r34 + v / p_.a_ref * rle;
-      r[m + i] = rle;
-      // Node values: d F(y'_j) at fixed t'_j; the differences' second terms via the weight sums.
-      Real w0sum = 0, wqsum = 0;
-      for (std::size_t j = 0; j < count; ++j) {
-        const Real w0 = nd.weight[j] / nd.dist[j];
-        w0sum += w0;
-        wqsum += wq[j];
-        const auto& dj = dn[j];
-        if (!(dj.value.a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
-        shape_gradient(s, nd.yp[j], dj.value.a, dan, dbn);
-        dnode = dj.f0_a * dan + dj.f0_b * dbn;
-        dlhs += w0 * dnode;
-        dnode = dj.q_a * dan + dj.q_b * dbn;
-        dright += wq[j] * dnode;
-      }
-      dlhs -= w0sum * df0_i;
-      dright += (ends - wqsum) * dq_i;
-      // The kernels' dependence on x0 and on l (nodes fixed in t).
-      dright += slopes.x0 * (da_i + db_i);
-      dright[lam] += slopes.l;
-      // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
-      //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
-      const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
-      dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
-      dlhs[lam] += 2 * here.f0;
-      Vector drhs = -(c1 * a / 2) * da_i - c1 * (b - v) * db_i;
-      drhs[lam] -= p_.c2 * y * y;
-      drhs[del] += scale34;
-      const Vector dr34 = (dlhs - drhs) / scale34;
-      // Leading edge: rle = (bessel - right) / (slope a_ref).
-      const Real z = a / v, e0 = edge.k0, e1 = edge.k1, slope = edge.slope, ri = dh.ri;
-      const Real e0z = e0 - e1, e1z = e1 - e0 - e1 / z;
-      const Real bessel_a = c1 * (b * e1 + a * b * e1z / v - dh.g_a * e0 - here.g * e0z / v);
-      const Real bessel_b = c1 * (a * e1 - dh.g_b * e0);
-      const Real slope_a =
-          c1 * (e1 + ri * e0) + c1 * a * (e1z / v + dh.ri_x * (1 + p_.f) / v * e0 + ri * e0z / v);
-      const Vector dbessel = bessel_a * da_i + bessel_b * db_i;
-      const Vector drle = (dbessel - dright) / (slope * p_.a_ref) - (rle * slope_a / slope) * da_i;
-      jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
-      jac.row(m + i) = drle.transpose();
-    }
-    // Load (47), nodes fixed in y/l: d/d ln l of the integral is the integral itself.
-    std::vector<Real> nodes, weights;
-    load_nodes(s, nodes, weights);
-    Real sum = 0;
-    Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-      const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
-      const auto& sf = dj.value;
-      sum += weights[j] * sf.f0;
-      if (!(sf.a > 0)) continue;
-      shape_gradient(s, nodes[j], sf.a, dan, dbn);
-      dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
-    }
-    r[2 * m] = 2 * sum / p_.load_target - 1;
-    jac.row(2 * m) = (2 * dsum / p_.load_target).transpose();
-    jac(2 * m, lam) = 2 * sum / p_.load_target;
-    for (int i = 0; i < r.size(); ++i)
-      if (!(boost::math::isfinite)(r[i])) return false;
-    return jac.allFinite();
-  }
+  bool jacobian(const Vector& x, Vector& r, Matrix& jac) const;
 
  private:
   /// The nodes of one collocation point: y' = y +- s on both sides (panels doubling from x0/2 and
@@ -594,5 +478,142 @@ class LineResidual {
   std::vector<Real> t_;
   Real t_max_;
 };
+
+template <RealScalar Real, class Quadrature>
+requires NodalQuadratureRule<Quadrature, Real>
+auto LineResidual<Real, Quadrature>::operator()(const Vector& x, Vector& r) const -> bool {
+  r.resize(equations());
+  const LineShape<Real> s = shape(x);
+  const Real d = penetration(x);
+  const int m = points();
+  for (int i = 0; i < m; ++i) {
+    Real r34 = 0, rle = 0;
+    if (!at_point(s, d, t_[i] * s.l, r34, rle)) return false;
+    // (34) depends on b through C1 V b, the leading-edge condition through its slope C1 V (as
+    // V tau >> a): adding V/a_ref times the latter (scaled to an error in b/a_ref) cancels the b
+    // dependence of (34) to first order, so that (34) speaks for a, l and d at every speed. A row
+    // operation: the solution is unchanged, the Jacobian's condition number no longer grows as V.
+    r[i] = r34 + p_.vtau / p_.a_ref * rle;
+    r[m + i] = rle;
+  }
+  r[2 * m] = load(s) / p_.load_target - 1;
+  for (int i = 0; i < r.size(); ++i)
+    if (!(boost::math::isfinite)(r[i])) return false;
+  return true;
+}
+
+template <RealScalar Real, class Quadrature>
+requires NodalQuadratureRule<Quadrature, Real>
+auto LineResidual<Real, Quadrature>::jacobian(const Vector& x, Vector& r, Matrix& jac) const
+    -> bool {
+  using std::log;
+  if (form_ != LeadingEdgeForm::exterior) return false;
+  const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
+  r.resize(equations());
+  jac.setZero(equations(), nu);
+  const LineShape<Real> s = shape(x);
+  const Real d = penetration(x), c1 = p_.c1, v = p_.vtau;
+  const Real scale34 = c1 * p_.a_ref * p_.a_ref;
+  Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu);
+  for (int i = 0; i < m; ++i) {
+    const Real t = t_[i], y = t * s.l;
+    const auto dh = strip_derivatives(s.a(y), s.b(y));
+    const auto& here = dh.value;
+    const Real a = here.a, b = here.b, x0 = a + b;
+    if (!(a > 0) || !(x0 > 0)) return false;
+    shape_gradient(s, y, a, da_i, db_i);
+    df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
+    dq_i = dh.q_a * da_i + dh.q_b * db_i;
+    PointNodes nd;
+    point_nodes(s, y, x0, nd);
+    const std::size_t count = nd.yp.size();
+    std::vector<Real> df0(count), dq(count), wq(count);
+    dlhs.setZero();
+    dright.setZero();
+    Vector dan(nu), dbn(nu);
+    std::vector<StripDerivatives> dn(count);
+    for (std::size_t j = 0; j < count; ++j) {
+      dn[j] = strip_derivatives(s.a(nd.yp[j]), s.b(nd.yp[j]));
+      df0[j] = dn[j].value.f0 - here.f0;
+      dq[j] = dn[j].value.q - here.q;
+    }
+    Real ends = 0;
+    KernelSlopes slopes;
+    const Real right = exterior_right(nd, dq, here.q, x0, &wq, &ends, &slopes);
+    Real r34 = 0, rle = 0;
+    const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
+    r[i] = r34 + v / p_.a_ref * rle;
+    r[m + i] = rle;
+    // Node values: d F(y'_j) at fixed t'_j; the differences' second terms via the weight sums.
+    Real w0sum = 0, wqsum = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+      const Real w0 = nd.weight[j] / nd.dist[j];
+      w0sum += w0;
+      wqsum += wq[j];
+      const auto& dj = dn[j];
+      if (!(dj.value.a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
+      shape_gradient(s, nd.yp[j], dj.value.a, dan, dbn);
+      dnode = dj.f0_a * dan + dj.f0_b * dbn;
+      dlhs += w0 * dnode;
+      dnode = dj.q_a * dan + dj.q_b * dbn;
+      dright += wq[j] * dnode;
+    }
+    dlhs -= w0sum * df0_i;
+    dright += (ends - wqsum) * dq_i;
+    // The kernels' dependence on x0 and on l (nodes fixed in t).
+    dright += slopes.x0 * (da_i + db_i);
+    dright[lam] += slopes.l;
+    // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
+    //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
+    const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
+    dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
+    dlhs[lam] += 2 * here.f0;
+    Vector drhs = -(c1 * a / 2) * da_i - c1 * (b - v) * db_i;
+    drhs[lam] -= p_.c2 * y * y;
+    drhs[del] += scale34;
+    const Vector dr34 = (dlhs - drhs) / scale34;
+    // Leading edge: rle = (bessel - right) / (slope a_ref).
+    const Real z = a / v, e0 = edge.k0, e1 = edge.k1, slope = edge.slope, ri = dh.ri;
+    const Real e0z = e0 - e1, e1z = e1 - e0 - e1 / z;
+    const Real bessel_a = c1 * (b * e1 + a * b * e1z / v - dh.g_a * e0 - here.g * e0z / v);
+    const Real bessel_b = c1 * (a * e1 - dh.g_b * e0);
+    const Real slope_a =
+        c1 * (e1 + ri * e0) + c1 * a * (e1z / v + dh.ri_x * (1 + p_.f) / v * e0 + ri * e0z / v);
+    const Vector dbessel = bessel_a * da_i + bessel_b * db_i;
+    const Vector drle = (dbessel - dright) / (slope * p_.a_ref) - (rle * slope_a / slope) * da_i;
+    jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
+    jac.row(m + i) = drle.transpose();
+  }
+  // Load (47), nodes fixed in y/l: d/d ln l of the integral is the integral itself.
+  std::vector<Real> nodes, weights;
+  load_nodes(s, nodes, weights);
+  Real sum = 0;
+  Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
+    const auto& sf = dj.value;
+    sum += weights[j] * sf.f0;
+    if (!(sf.a > 0)) continue;
+    shape_gradient(s, nodes[j], sf.a, dan, dbn);
+    dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
+  }
+  r[2 * m] = 2 * sum / p_.load_target - 1;
+  jac.row(2 * m) = (2 * dsum / p_.load_target).transpose();
+  jac(2 * m, lam) = 2 * sum / p_.load_target;
+  for (int i = 0; i < r.size(); ++i)
+    if (!(boost::math::isfinite)(r[i])) return false;
+  return jac.allFinite();
+}
+
+// Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
+// viscoroll::compiled sets, the residuals of the line solvers' default rule (12-point
+// Gauss-Legendre) are instantiated once in that library (src/) and not in the including
+// translation unit; operator() and jacobian() are defined out of the class (not inline), so that
+// g++ does not instantiate them here for inlining either.
+#if defined(VISCOROLL_COMPILED)
+extern template class LineResidual<float, GaussLegendre<float, 12>>;
+extern template class LineResidual<double, GaussLegendre<double, 12>>;
+extern template class LineResidual<long double, GaussLegendre<long double, 12>>;
+#endif
 
 }  // namespace viscoroll

@@ -713,6 +713,7 @@ using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
 // inline), so that g++ does not instantiate them here for inlining either. Other instantiations
 // are implicit, as in header-only mode.
 #if defined(VISCOROLL_COMPILED)
+extern template class LineSolver<float, StandardLinearSolid<float>>;
 extern template class LineSolver<double, StandardLinearSolid<double>>;
 extern template class LineSolver<long double, StandardLinearSolid<long double>>;
 #endif

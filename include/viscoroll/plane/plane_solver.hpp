@@ -206,6 +206,7 @@ using PlaneSolverD = PlaneSolver<double, StandardLinearSolid<double>>;
 // inline), so that g++ does not instantiate them here for inlining either. Other instantiations
 // are implicit, as in header-only mode.
 #if defined(VISCOROLL_COMPILED)
+extern template class PlaneSolver<float, StandardLinearSolid<float>>;
 extern template class PlaneSolver<double, StandardLinearSolid<double>>;
 extern template class PlaneSolver<long double, StandardLinearSolid<long double>>;
 #endif

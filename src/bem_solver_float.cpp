@@ -1,0 +1,12 @@
+// viscoroll::compiled (docs/building.md, "Compiled mode"): one solver instantiated once,
+// BemSolver<float, StandardLinearSolid<float>>.
+// Compiled with VISCOROLL_COMPILED like its users, so that the other solvers' explicit
+// instantiation declarations keep them out of this file (they have files of their own).
+#include <viscoroll/bem/bem_solver.hpp>
+#include <viscoroll/material/standard_linear_solid.hpp>
+
+namespace viscoroll {
+
+template class BemSolver<float, StandardLinearSolid<float>>;
+
+}  // namespace viscoroll
