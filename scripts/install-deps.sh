@@ -11,6 +11,8 @@ packages=(
   gnuplot-nox                  # figures
   libfftw3-dev                 # optional FFT back end
   clang libclang-rt-14-dev     # libFuzzer target (scripts/fuzz.sh)
+  pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
+  python3-pytest python3-matplotlib        # its tests and examples
 )
 
 missing=()

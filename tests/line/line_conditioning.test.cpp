@@ -110,7 +110,7 @@ TEST_CASE("line solver: continuation in N stays on the smooth branch", "[line][s
 
 TEMPLATE_TEST_CASE("line solver: self-convergence to 1e-6 at V tau = a0 in the variable s",
                    "[line][slow]", double, long double) {
-  // docs/line-solver.md, "Measured after the semi-analytic Jacobian": in the variable
+  // docs/validation.md, "Line solver: self-convergence": in the variable
   // s = sqrt(1 - t^2) the successive changes of a(0), b(0), l, d, chi fall from N = 16 -> 32 to
   // 32 -> 48; in double the last is at most 9.7e-7 (l), 8.9e-7 (a(0)), 2.2e-7 (b(0)), 7e-10
   // (d, chi), the issue's 1e-6. Long double takes the same iteration to its own rounding; its

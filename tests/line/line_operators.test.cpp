@@ -159,7 +159,8 @@ TEMPLATE_TEST_CASE("line: finite part against closed forms", "[line]", float, do
     }
   }
   SECTION("near field (24) and strip form (34) on Kalker's static solution") {
-    // Static line contact (ERRATA.md): a^2 = a0^2 (1 - t^2), F0 = C1 a^2 / 4, and (34) holds with
+    // Static line contact (docs/paper.md, "Checked by derivation"): a^2 = a0^2 (1 - t^2),
+    // F0 = C1 a^2 / 4, and (34) holds with
     // C2 = C1 (a0/l)^2 (L - 1), d = C1 a0^2 L / 2, L = ln(4 l / a0), i.e.
     //   F0 ln(16 (l^2 - y^2)/a^2) + FP[F0] = -C1 a^2/4 - C2 y^2/2 + d.
     const Real l = 2, a0 = Real(0.1), c1 = Real(3);

@@ -247,7 +247,7 @@ TEMPLATE_TEST_CASE("line solver: the glassy closed form", "[line]", float, doubl
   using Real = TestType;
   // strip_is_glassy (u (ln(2/u) + ln(1 + f)/2 + 1) <= eps, u = a0/V tau, from (P6)): Kalker's
   // solution with the instantaneous compliance, c P instead of (1 + f) c P: a and l scale by
-  // (1 + f)^(-1/3), d by (1 + f)^(-2/3) (ERRATA.md, Section 7).
+  // (1 + f)^(-1/3), d by (1 + f)^(-2/3) (docs/paper.md, correction 7).
   const Real tol = 16 * eps<Real>();  // as above; measured <= 2 eps
   const Scene<Real> sc;
   const Real v = Real(1e25);

@@ -1,12 +1,12 @@
 // "Only what a scene needs" (issue 5): an elastic material, V tau = 0 (or below eps a0) and the
 // glassy limit (V tau beyond ~a0/eps, or +inf) are answered by the closed forms, not by the
 // rolling solvers. The closed forms are checked against independent truth: Hertz's strip (the
-// plane, docs/theory.md (P6)) and Kalker's static line contact (ERRATA.md, "Checked by
+// plane, docs/theory.md (P6)) and Kalker's static line contact (docs/paper.md, "Checked by
 // derivation": a = a0 sqrt(1 - y^2/l^2), C2/C1 = (a0/l)^2 (ln(4 l/a0) - 1),
 // d = (1/2) C1 a0^2 ln(4 l/a0), C1 a0^2 l / 3 = compliance load). That the rolling path was not
 // taken shows in what only the closed form returns exactly: b = G = chi = 0 (the rolling
 // solutions have b, chi > 0 and, glassy, G -> f a^2/2), no iterations, the closed form's reason.
-// The run time of either path is in bench_needs (docs/benchmarks.md).
+// The run time of either path is in bench_needs (docs/performance.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -114,7 +114,7 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy plane scenes are Hertz's s
 namespace {
 
 /// Checks a line solution against Kalker's static contact of compliance c_eff (identities of
-/// ERRATA.md, "Checked by derivation") and the closed form's bookkeeping.
+/// docs/paper.md, "Checked by derivation") and the closed form's bookkeeping.
 template <class Real, class Solution>
 void check_static_line(const Solution& s, Real c1, Real c2, Real load, Real c_eff,
                        Real a0_long_term, const std::string& reason) {
@@ -190,7 +190,7 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy line scenes are Kalker's s
       const auto s =
           LineSolver<Real, StandardLinearSolid<Real>>(m).solve({c1, c2, load, Real(1e30)});
       check_static_line(s, c1, c2, load, c, a0, "glassy limit (closed form)");
-      // The 3-D glassy contact: a and l scale by (1 + f)^(-1/3) (ERRATA.md, Section 7).
+      // The 3-D glassy contact: a and l scale by (1 + f)^(-1/3) (docs/paper.md, correction 7).
       CHECK(std::abs(s.a(Real(0)) - a0 / cbrt(1 + f)) <= 32 * eps<Real>() * a0);
     }
   }

@@ -7,7 +7,8 @@
 // cpp_bin_float_50 (f = 0 through the standard linear solid, V tau = 0, and the glassy limit
 // V tau = a0/eps^2, strip_is_glassy) over l0/a0 = 3, 5, 1000, against Kalker's values written
 // independently of the solver (a(0) = a0, l = rho a0, d = (1/2) C1 a0^2 ln(4 rho), scaled by
-// (1+f)^(-1/3) and (1+f)^(-2/3) in the glassy limit, ERRATA.md); one iterated cell at terms = 2.
+// (1+f)^(-1/3) and (1+f)^(-2/3) in the glassy limit, docs/paper.md correction 7); one iterated
+// cell at terms = 2.
 // [slow]: iterated cells (terms = 4) along every axis and at the corners in double, some of them
 // in float and long double. An iterated multiprecision solve takes ~5 min (terms = 2,
 // cpp_bin_float_50, measured 294 s): not in the suite (docs/stability.md).
@@ -248,8 +249,9 @@ Outcome<Real> check_iterated(const Cell<Real>& cell, int terms) {
   const long double le = load_error(s, cell);
   const long double quadrature = viscoroll::AdaptiveGaussKronrod<Real>::tolerance();
   CHECK(le <= 4 * static_cast<long double>(s.residual) + 2 * quadrature + 64 * eps<Real>());
-  // The limits (ERRATA.md): V tau -> 0 the static contact of the long-term compliance, departing
-  // by O(V tau/a0) (docs/line-solver.md, bound V tau/a0); chi -> C1 V tau f/(1+f) to O(V^2)
+  // The limits (docs/paper.md, correction 7): V tau -> 0 the static contact of the long-term
+  // compliance, departing by O(V tau/a0) (docs/line-solver.md, bound V tau/a0); chi -> C1 V tau
+  // f/(1+f) to O(V^2)
   // (bound 10 V tau/a0 relative). V tau -> inf the glassy contact, a, l by (1+f)^(-1/3), d by
   // (1+f)^(-2/3), approached as O(alpha ln(1/alpha)), alpha = (1+f) a/(V tau) (Eq. 37; the
   // plane's (P6) and line_solver.test.cpp's (a0/V tau) ln(V tau/a0) at f = 9), plus

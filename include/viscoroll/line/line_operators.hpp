@@ -165,7 +165,8 @@ class LineOperators {
            qy * (line_kernel_psi(Real(d1 / vtau)) + line_kernel_psi(Real(d2 / vtau)));
   }
 
-  /// The right side of Eq. (44) as printed (with the bracket [gamma - ln V tau] of ERRATA.md):
+  /// The right side of Eq. (44) as printed, with the bracket [gamma - ln V tau] (docs/paper.md,
+  /// correction 5):
   ///   Lambda[Q](y) + 2 Q(y) (gamma - ln V) - pi/(2V) int Q(y') [H0 - Y0](|y - y'| / V) dy'.
   /// Its three terms cancel to leading order as V -> 0 (lost digits ~ log10(|Q ln V| / |R|));
   /// use leading_edge_kernel there. Kept as an independent check of (L2).

@@ -1,6 +1,6 @@
 // viscoroll: Kalker's static line-contact solution of an ellipsoidal indenter (V tau = 0).
 //
-// Panek & Kalker (1980), Eqs. (33), (34), (47), (48) at V tau = 0 (ERRATA.md, "Checked by
+// Panek & Kalker (1980), Eqs. (33), (34), (47), (48) at V tau = 0 (docs/paper.md, "Checked by
 // derivation"): with G = 0 (Eq. 36 at V tau = 0 and b = 0) and F0 = C1 a^2 / 4, Eq. (34) is met
 // exactly by
 //   a(y) = a0 sqrt(1 - y^2/l^2),  C2/C1 = (a0/l)^2 (ln(4 l/a0) - 1),  d = (1/2) C1 a0^2 ln(4 l/a0),
