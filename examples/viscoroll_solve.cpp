@@ -291,8 +291,12 @@ class Output {
                 cell(real(r, "a0"), 7).c_str(), cell(real(r, "b0"), 7).c_str());
     if (three_d())
       std::printf(" %-13s %-13s", cell(real(r, "l"), 7).c_str(), cell(real(r, "d"), 7).c_str());
+    // "min": converged to the certified least-squares minimum where the line equations have no
+    // root (root false).
+    const Value* root = find(r, "root");
+    const bool ok = converged && std::get<bool>(*converged);
     std::printf(" %-13s %s\n", cell(real(r, "chi"), 7).c_str(),
-                converged && std::get<bool>(*converged) ? "yes" : "no");
+                !ok ? "no" : (root && !std::get<bool>(*root) ? "min" : "yes"));
   }
 
   /// 1-based column of `key` in the CSV, or 0.

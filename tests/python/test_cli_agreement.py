@@ -1,6 +1,7 @@
 """viscoroll.solve and viscoroll.sweep against the command line viscoroll-solve on the shipped
-scenes: every output field to 1e-12 (relative) at single speeds (a cold start each), and a
-serial sweep (chunk = len(speeds)) against the command line's continuation over all speeds."""
+scenes: every output field to 1e-12 (relative) at single speeds (a cold start each), and a sweep
+against the command line's sweep over all of a scene's speeds (both viscoroll::sweep, chunks of
+16)."""
 
 import json
 import math
@@ -26,7 +27,7 @@ TOLERANCE = 1e-12
 
 
 def run_cli(program, scene_path, method, grid, speeds):
-    """The command line's JSON lines for `speeds` (solved in order, with continuation)."""
+    """The command line's JSON lines for `speeds` (its sweep: chunks of 16 with continuation)."""
     args = [str(program), "--scene", str(scene_path),
             "--speed", ",".join(repr(float(v)) for v in speeds)]
     if method:
@@ -76,11 +77,12 @@ def test_single_speeds_match_the_command_line(viscoroll_solve, scenes_dir, file,
 @pytest.mark.parametrize("file,method,grid", [("paper.json", None, None),
                                               ("polyamide_cylinder.json", None, None),
                                               ("rubber_ball.json", None, None)])
-def test_serial_sweep_matches_the_command_lines_continuation(viscoroll_solve, scenes_dir, file,
-                                                             method, grid):
+def test_sweep_matches_the_command_lines_sweep(viscoroll_solve, scenes_dir, file, method, grid):
+    """Both sweep with viscoroll::sweep in chunks of DEFAULT_CHUNK (paper.json: 25 speeds, two
+    chunks, so the second chunk's cold start is compared too)."""
     scene = vr.Scene.from_json(scenes_dir / file)
     expected = run_cli(viscoroll_solve, scenes_dir / file, method, grid, scene.speeds)
-    got = vr.sweep(scene, method=method, grid=grid, chunk=len(scene.speeds), threads=1)
+    got = vr.sweep(scene, method=method, grid=grid, threads=1)
     assert len(expected) == len(scene.speeds)
     for i, line in enumerate(expected):
         row = {key: (value[i].item() if isinstance(value, np.ndarray) else value[i])
