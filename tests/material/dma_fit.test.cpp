@@ -33,7 +33,8 @@ double worst_error(const viscoroll::DmaFit<double>& fit, const viscoroll::DmaDat
 
 }  // namespace
 
-TEST_CASE("nnls: Lawson-Hanson recovers a known solution with active constraints", "[material][dma]") {
+TEST_CASE("nnls: Lawson-Hanson recovers a known solution with active constraints",
+          "[material][dma]") {
   using Matrix = Eigen::MatrixXd;
   using Vector = Eigen::VectorXd;
   // Hand example: min ||A x - b||, x >= 0; the unconstrained solution (-1, 2) is infeasible, the
@@ -100,15 +101,20 @@ TEST_CASE("dma: the CSV reader and its errors", "[material][dma]") {
     std::istringstream in(text);
     return viscoroll::read_dma_csv<double>(in, {}, "x.csv");
   };
-  CHECK_THROWS_WITH(fails("1,2,3\n"), Catch::Contains("x.csv line 1") && Catch::Contains("unknown column '1'"));
-  CHECK_THROWS_WITH(fails("frequency_hz,storage_pa\n1,2\n"), Catch::Contains("lacks the column loss_pa"));
-  CHECK_THROWS_WITH(fails("frequency_hz,storage_pa,loss_pa\n1,2\n"), Catch::Contains("line 2: 2 fields"));
+  CHECK_THROWS_WITH(fails("1,2,3\n"),
+                    Catch::Contains("x.csv line 1") && Catch::Contains("unknown column '1'"));
+  CHECK_THROWS_WITH(fails("frequency_hz,storage_pa\n1,2\n"),
+                    Catch::Contains("lacks the column loss_pa"));
+  CHECK_THROWS_WITH(fails("frequency_hz,storage_pa,loss_pa\n1,2\n"),
+                    Catch::Contains("line 2: 2 fields"));
   CHECK_THROWS_WITH(fails("frequency_hz,storage_pa,loss_pa\n1,2,abc\n"),
                     Catch::Contains("loss_pa 'abc' is not a number"));
-  CHECK_THROWS_WITH(fails("frequency_hz,storage_pa,loss_pa\n1,2,3\n-1,2,3\n"),
-                    Catch::Contains("line 3: frequency_hz = -1 is outside the valid range frequency_hz > 0"));
+  CHECK_THROWS_WITH(
+      fails("frequency_hz,storage_pa,loss_pa\n1,2,3\n-1,2,3\n"),
+      Catch::Contains("line 3: frequency_hz = -1 is outside the valid range frequency_hz > 0"));
   CHECK_THROWS_WITH(fails("frequency_hz,storage_pa,loss_pa\n"), Catch::Contains("no data rows"));
-  CHECK_THROWS_AS(viscoroll::read_dma_csv_file<double>(data_dir / "no_such.csv"), std::invalid_argument);
+  CHECK_THROWS_AS(viscoroll::read_dma_csv_file<double>(data_dir / "no_such.csv"),
+                  std::invalid_argument);
 }
 
 TEST_CASE("dma: the fit recovers the known spectrum's moduli to 1e-6 at every frequency",
@@ -148,10 +154,12 @@ TEST_CASE("dma: data at several temperatures are shifted to the master curve fir
   INFO(fit.report.summary);
   CHECK_FALSE(fit.report.poor);
   CHECK(worst_error(fit, data) <= 1e-6);
-  CHECK(fit.report.reduced_frequency_hz.front() == Approx(0.01 * viscoroll::shift_factor(*options.shift, -30.0)));
+  CHECK(fit.report.reduced_frequency_hz.front() ==
+        Approx(0.01 * viscoroll::shift_factor(*options.shift, -30.0)));
 }
 
-TEST_CASE("dma: a poor fit is reported, not hidden; no rubbery plateau is an error", "[material][dma]") {
+TEST_CASE("dma: a poor fit is reported, not hidden; no rubbery plateau is an error",
+          "[material][dma]") {
   const auto data = viscoroll::read_dma_csv_file<double>(data_dir / "dma_known_spectrum.csv");
   viscoroll::DmaFitOptions<double> options;
   options.times = {1e-6, 1e-2};  // two times for twelve decades

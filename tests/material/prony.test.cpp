@@ -64,9 +64,9 @@ TEMPLATE_TEST_CASE("prony: relaxation -> creep -> relaxation round trip to a few
   }
   CHECK(worst_creep <= 16);
   CHECK(ulps(c2.mu_d(), c.mu_d()) <= 16);
-  WARN("round trip over 30 terms, 20 decades, digits " << std::numeric_limits<T>::digits
-                                                       << ": relaxation " << worst
-                                                       << " ulps, creep " << worst_creep << " ulps");
+  WARN("round trip over 30 terms, 20 decades, digits "
+       << std::numeric_limits<T>::digits << ": relaxation " << worst << " ulps, creep "
+       << worst_creep << " ulps");
 }
 
 TEMPLATE_TEST_CASE("prony: retardation times interlace the relaxation times (R6)",
@@ -112,7 +112,8 @@ TEMPLATE_TEST_CASE("prony: one term is the standard linear solid (R6a)", "[mater
   const auto c = relax.to_creep();
   CHECK(std::abs(c.terms()[0].f / f - 1) <= 16 * eps);
   CHECK(std::abs(c.terms()[0].tau / tau - 1) <= 16 * eps);
-  CHECK(relax.instantaneous_compliance() == Approx(sls.instantaneous_compliance()).epsilon(8 * eps));
+  CHECK(relax.instantaneous_compliance() ==
+        Approx(sls.instantaneous_compliance()).epsilon(8 * eps));
   CHECK(relax.long_term_compliance() == Approx(sls.long_term_compliance()).epsilon(8 * eps));
   // Elastic is the empty series.
   const auto e = viscoroll::as_prony(viscoroll::Elastic<T>(T(2), T(0.25)));
@@ -124,7 +125,8 @@ TEMPLATE_TEST_CASE("prony: one term is the standard linear solid (R6a)", "[mater
 TEMPLATE_TEST_CASE("prony: M terms with equal times are one term with the summed weight",
                    "[material][prony]", float, double, long double) {
   using T = TestType;
-  const PronyRelaxation<T> split(T(1), T(0.4), {{T(1), T(2)}, {T(2), T(2)}, {T(3), T(2)}, {T(0), T(5)}});
+  const PronyRelaxation<T> split(T(1), T(0.4),
+                                 {{T(1), T(2)}, {T(2), T(2)}, {T(3), T(2)}, {T(0), T(5)}});
   const PronyRelaxation<T> one(T(1), T(0.4), {{T(6), T(2)}});
   REQUIRE(split.memory_terms().size() == 1);
   CHECK(split.memory_terms()[0].f == one.memory_terms()[0].f);
@@ -136,7 +138,8 @@ TEMPLATE_TEST_CASE("prony: M terms with equal times are one term with the summed
   CHECK(a.terms()[0].g == b.terms()[0].g);
   CHECK(a.terms()[0].rho == b.terms()[0].rho);
   CHECK(a.g_inf() == b.g_inf());
-  CHECK(csplit.creep(T(1.7)) == Approx(cone.creep(T(1.7))).epsilon(4 * std::numeric_limits<T>::epsilon()));
+  CHECK(csplit.creep(T(1.7)) ==
+        Approx(cone.creep(T(1.7))).epsilon(4 * std::numeric_limits<T>::epsilon()));
 }
 
 TEST_CASE("prony: int_0^t G(t - s) dJ(s) = 1, an independent check of the conversion (R3)",
@@ -183,7 +186,8 @@ TEST_CASE("prony: dynamic moduli (R10)", "[material][prony]") {
 TEST_CASE("prony: invalid parameters are named", "[material][prony][validation]") {
   using R = PronyRelaxation<double>;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  CHECK_THROWS_WITH(R(0.0, 0.3, {{1.0, 1.0}}), Catch::Contains("g_inf = 0") && Catch::Contains("g_inf > 0"));
+  CHECK_THROWS_WITH(R(0.0, 0.3, {{1.0, 1.0}}),
+                    Catch::Contains("g_inf = 0") && Catch::Contains("g_inf > 0"));
   CHECK_THROWS_WITH(R(-1.0, 0.3, {}), Catch::Contains("g_inf = -1"));
   CHECK_THROWS_WITH(R(1.0, 0.3, {{1.0, 1.0}, {-2.0, 1.0}}), Catch::Contains("g[1] = -2"));
   CHECK_THROWS_WITH(R(1.0, 0.3, {{1.0, 0.0}}), Catch::Contains("rho[0] = 0"));

@@ -1,6 +1,6 @@
 // Time–temperature superposition (docs/theory.md (R11)–(R13), docs/materials.md).
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -13,7 +13,8 @@ TEMPLATE_TEST_CASE("temperature: a_T(T_ref) = 1 and hand values of WLF and Arrhe
                    "[material][temperature]", float, double, long double) {
   using T = TestType;
   // Catch's Approx is in double: the bound is that of the coarser type.
-  const double eps = std::max(double(std::numeric_limits<T>::epsilon()), std::numeric_limits<double>::epsilon());
+  const double eps =
+      std::max(double(std::numeric_limits<T>::epsilon()), std::numeric_limits<double>::epsilon());
   const WlfShift<T> wlf(T(17.44), T(51.6), T(20));
   CHECK(wlf.factor(T(20)) == T(1));
   CHECK(wlf.log10_factor(T(20)) == T(0));
@@ -30,7 +31,8 @@ TEMPLATE_TEST_CASE("temperature: a_T(T_ref) = 1 and hand values of WLF and Arrhe
   CHECK(arr.log10_factor(T(0)) > 0);  // colder: slower, a_T > 1
 }
 
-TEST_CASE("temperature: every time of the material is scaled by a_T (R13)", "[material][temperature]") {
+TEST_CASE("temperature: every time of the material is scaled by a_T (R13)",
+          "[material][temperature]") {
   const WlfShift<double> wlf(8.86, 101.6, 20.0);
   const double t = 45.0, a = wlf.factor(t);
   const viscoroll::PronyRelaxation<double> m(1e6, 0.49, {{1e8, 1e-6}, {3e7, 1e-3}, {1e7, 1.0}});
@@ -67,7 +69,8 @@ TEST_CASE("temperature: the singular WLF temperature and invalid constants are r
   CHECK_NOTHROW(wlf.factor(-25.0));
   CHECK_THROWS_WITH(viscoroll::at_temperature(viscoroll::Elastic<double>(1.0, 0.3), wlf, -50.0),
                     Catch::Contains("temperature"));
-  CHECK_THROWS_WITH(wlf.factor(std::numeric_limits<double>::quiet_NaN()), Catch::Contains("temperature"));
+  CHECK_THROWS_WITH(wlf.factor(std::numeric_limits<double>::quiet_NaN()),
+                    Catch::Contains("temperature"));
   CHECK_THROWS_WITH(WlfShift<double>(0.0, 51.6, 20.0), Catch::Contains("c1 = 0"));
   CHECK_THROWS_WITH(WlfShift<double>(17.44, -1.0, 20.0), Catch::Contains("c2 = -1"));
   CHECK_THROWS_WITH(ArrheniusShift<double>(-5.0, 20.0), Catch::Contains("activation_energy = -5"));
@@ -75,5 +78,6 @@ TEST_CASE("temperature: the singular WLF temperature and invalid constants are r
   CHECK_THROWS_WITH(ArrheniusShift<double>(1e5, 20.0).factor(-273.15),
                     Catch::Contains("temperature = -273.15"));
   // a_T overflowing is an error naming the temperature, not an infinite time.
-  CHECK_THROWS_WITH(WlfShift<double>(1e3, 51.6, 20.0).factor(-31.0), Catch::Contains("temperature"));
+  CHECK_THROWS_WITH(WlfShift<double>(1e3, 51.6, 20.0).factor(-31.0),
+                    Catch::Contains("temperature"));
 }

@@ -142,14 +142,15 @@ DmaData<Real> read_dma_csv(std::istream& in, const DmaCsvOptions<Real>& options 
       continue;
     }
     if (fields.size() != columns)
-      detail::dma_error(source, number,
-                        std::to_string(fields.size()) + " fields, the header has " +
-                            std::to_string(columns));
+      detail::dma_error(
+          source, number,
+          std::to_string(fields.size()) + " fields, the header has " + std::to_string(columns));
     auto value = [&](int col, const char* name, bool positive) {
       Real v{};
       if (!detail::parse_real(fields[std::size_t(col)], v))
-        detail::dma_error(source, number,
-                          std::string(name) + " '" + fields[std::size_t(col)] + "' is not a number");
+        detail::dma_error(
+            source, number,
+            std::string(name) + " '" + fields[std::size_t(col)] + "' is not a number");
       if (!(boost::math::isfinite)(v) || (positive && !(v > 0)))
         detail::dma_error(source, number,
                           std::string(name) + " = " + detail::format_value(v) +
@@ -317,8 +318,9 @@ DmaFit<Real> fit_prony(const DmaData<Real>& data, const DmaFitOptions<Real>& opt
   out << (rep.poor ? "POOR FIT" : "fit") << ": relative error G' max " << rep.max_storage_error
       << " rms " << rep.rms_storage_error << ", G'' max " << rep.max_loss_error << " rms "
       << rep.rms_loss_error << "; " << rep.nonzero_terms << " of " << rep.candidate_terms
-      << " terms non-zero; G_inf " << g_inf << " Pa" << (sol.converged ? "" : "; NNLS did not converge")
-      << " (threshold " << options.poor_fit_threshold << ")";
+      << " terms non-zero; G_inf " << g_inf << " Pa"
+      << (sol.converged ? "" : "; NNLS did not converge") << " (threshold "
+      << options.poor_fit_threshold << ")";
   rep.summary = out.str();
   return fit;
 }

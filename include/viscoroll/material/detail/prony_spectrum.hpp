@@ -101,9 +101,9 @@ std::vector<SpectrumTerm<Real>> convert_spectrum(const std::vector<SpectrumTerm<
     // Normalised to O(1): toms748's interpolation multiplies values of the function, which would
     // overflow a float at the scale of G_g d.
     const Real norm = (std::max)(abs(f0), abs(f1));
-    const auto r = boost::math::tools::toms748_solve(
-        [&](Real d) { return scaled(fr, d) / norm; }, Real(0), dmax, f0 / norm, f1 / norm, tol,
-        iterations);
+    const auto r =
+        boost::math::tools::toms748_solve([&](Real d) { return scaled(fr, d) / norm; }, Real(0),
+                                          dmax, f0 / norm, f1 / norm, tol, iterations);
     return abs(scaled(fr, r.first)) <= abs(scaled(fr, r.second)) ? r.first : r.second;
   };
   auto brackets = [&](const Frame& fr, Real dmax) {
