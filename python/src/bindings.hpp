@@ -10,15 +10,20 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/solve_options.hpp"
+
 namespace viscoroll::python {
 
-enum class Method { plane, line, bem };
+/// The command line's methods and their names (examples/cli/solve_options.hpp).
+using cli::Method;
+using cli::method_name;
 
 /// A material: the standard linear solid of Eq. (1), or elastic (mu = mu_d, f = tau = 0).
 struct MaterialSpec {
@@ -85,8 +90,6 @@ using SolvedPtr = std::shared_ptr<const Solved>;
 /// std::invalid_argument naming `grid`.
 int discretisation(Method method, std::optional<long> grid);
 
-const char* method_name(Method method);
-
 /// Seconds since `start`.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -125,6 +128,44 @@ struct TimedSolver {
     return out;
   }
 };
+
+/// One solve of a seeded method (line: SolvedT = LineSolved; bem: BemSolved), timed; `start`
+/// must be a result of the same method. SolvedT is constructed from (solution, tau, speed, grid,
+/// seconds).
+template <class SolvedT, class Solver, class Scene>
+SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, const Solved* start,
+                       double tau, int grid) {
+  const typename Solver::Solution* seed = nullptr;
+  if (start) {
+    const auto* same = dynamic_cast<const SolvedT*>(start);
+    if (!same)
+      throw std::invalid_argument(std::string("viscoroll: start must be a result of the ") +
+                                  method_name(method) + " method, got " +
+                                  method_name(start->method()));
+    seed = &same->solution();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  auto s = solver.solve(at, seed);
+  const double seconds = seconds_since(t0);
+  return std::make_shared<SolvedT>(std::move(s), tau, at.speed, grid, seconds);
+}
+
+/// viscoroll::sweep of a seeded method over `speeds` from the scene `at` (its speed replaced).
+template <class SolvedT, class Solver, class Scene>
+std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
+                                    std::span<const double> speeds, double tau, int grid,
+                                    const SweepOptions& options) {
+  auto make = [tau, grid](const typename Solver::Solution& s, double speed,
+                          double seconds) -> SolvedPtr {
+    return std::make_shared<SolvedT>(s, tau, speed, grid, seconds);
+  };
+  const TimedSolver<Solver, decltype(make)> timed{solver, make};
+  auto solutions = sweep(timed, at, speeds, options);
+  std::vector<SolvedPtr> out;
+  out.reserve(solutions.size());
+  for (auto& s : solutions) out.push_back(std::move(s.solved));
+  return out;
+}
 
 // The solvers (module.cpp: plane; solve_line.cpp; solve_bem.cpp). `scene` was checked for the
 // method; `start` seeds the iteration (line, bem) when it is a solution of the same method.

@@ -33,18 +33,6 @@ namespace py = pybind11;
 
 namespace viscoroll::python {
 
-const char* method_name(Method method) {
-  switch (method) {
-    case Method::plane:
-      return "plane";
-    case Method::line:
-      return "line";
-    case Method::bem:
-      return "bem";
-  }
-  return "?";
-}
-
 int discretisation(Method method, std::optional<long> grid) {
   if (method == Method::line) {
     const long n = grid.value_or(6);

@@ -103,37 +103,15 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 }
 
 SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start) {
-  const Solver solver = make_solver(scene, grid);
-  const BemScene<double> at = bem_scene(scene, speed);
-  const Solution* seed = nullptr;
-  if (start) {
-    const auto* bem = dynamic_cast<const BemSolved*>(start);
-    if (!bem)
-      throw std::invalid_argument("viscoroll: start must be a result of the bem method, got " +
-                                  std::string(method_name(start->method())));
-    seed = &bem->solution();
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  Solution s = solver.solve(at, seed);
-  const double seconds = seconds_since(t0);
-  return std::make_shared<BemSolved>(std::move(s), scene.material.tau, speed, grid, seconds);
+  return solve_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, speed), Method::bem,
+                                 start, scene.material.tau, grid);
 }
 
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
                                  const SweepOptions& options) {
-  const Solver solver = make_solver(scene, grid);
-  const BemScene<double> at = bem_scene(scene, 0.0);
-  for (const double v : speeds) bem_scene(scene, v);
-  const double tau = scene.material.tau;
-  auto make = [tau, grid](const Solution& s, double speed, double seconds) -> SolvedPtr {
-    return std::make_shared<BemSolved>(s, tau, speed, grid, seconds);
-  };
-  const TimedSolver<Solver, decltype(make)> timed{solver, make};
-  auto solutions = sweep(timed, at, speeds, options);
-  std::vector<SolvedPtr> out;
-  out.reserve(solutions.size());
-  for (auto& s : solutions) out.push_back(std::move(s.solved));
-  return out;
+  for (const double v : speeds) bem_scene(scene, v);  // every speed checked before any work
+  return sweep_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, 0.0), speeds,
+                                 scene.material.tau, grid, options);
 }
 
 }  // namespace viscoroll::python

@@ -69,37 +69,15 @@ LineScene<double> line_scene(const SceneSpec& scene, double speed) {
 }  // namespace
 
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start) {
-  const Solver solver = make_solver(scene, terms);
-  const LineScene<double> at = line_scene(scene, speed);
-  const Solution* seed = nullptr;
-  if (start) {
-    const auto* line = dynamic_cast<const LineSolved*>(start);
-    if (!line)
-      throw std::invalid_argument("viscoroll: start must be a result of the line method, got " +
-                                  std::string(method_name(start->method())));
-    seed = &line->solution();
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  Solution s = solver.solve(at, seed);
-  const double seconds = seconds_since(t0);
-  return std::make_shared<LineSolved>(std::move(s), scene.material.tau, speed, terms, seconds);
+  return solve_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, speed), Method::line,
+                                  start, scene.material.tau, terms);
 }
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   const SweepOptions& options) {
-  const Solver solver = make_solver(scene, terms);
-  LineScene<double> at = line_scene(scene, 0.0);
   for (const double v : speeds) line_scene(scene, v);  // every speed checked before any work
-  const double tau = scene.material.tau;
-  auto make = [tau, terms](const Solution& s, double speed, double seconds) -> SolvedPtr {
-    return std::make_shared<LineSolved>(s, tau, speed, terms, seconds);
-  };
-  const TimedSolver<Solver, decltype(make)> timed{solver, make};
-  auto solutions = sweep(timed, at, speeds, options);
-  std::vector<SolvedPtr> out;
-  out.reserve(solutions.size());
-  for (auto& s : solutions) out.push_back(std::move(s.solved));
-  return out;
+  return sweep_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, 0.0), speeds,
+                                  scene.material.tau, terms, options);
 }
 
 }  // namespace viscoroll::python
