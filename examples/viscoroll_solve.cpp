@@ -475,46 +475,83 @@ std::vector<typename Timed<Solver>::Solution> sweep_speeds(const Solver& solver,
   return viscoroll::sweep(Timed<Solver>{solver}, scene, p.speeds, options);
 }
 
-int run_plane(const Problem& p, Output& out) {
-  using Solver = viscoroll::PlaneSolverD;
-  std::vector<viscoroll::PlaneScene<double>> scenes;
+/// Runs every (tau, speed) of the problem: `scene_at(speed)` builds a scene and `solver_for(tau)`
+/// a solver, all of them validated before any output is opened; then each tau's speeds are swept
+/// and `report(tau, scene, solution, seconds)` adds the record and any notes. Returns the exit
+/// status (0 all converged, 1 not).
+template <class SceneAt, class SolverFor, class Report>
+int run_sweeps(const Problem& p, Output& out, SceneAt scene_at, SolverFor solver_for,
+               Report report) {
+  std::vector<std::invoke_result_t<SceneAt, double>> scenes;
   for (double speed : p.speeds) {
-    scenes.push_back({p.c1, p.load, speed});
+    scenes.push_back(scene_at(speed));
     scenes.back().validate();
   }
-  std::vector<Solver> solvers;
-  for (double tau : p.tau)
-    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau));
+  std::vector<std::invoke_result_t<SolverFor, double>> solvers;
+  for (double tau : p.tau) solvers.push_back(solver_for(tau));
   out.open();
   bool all_converged = true;
   for (std::size_t i = 0; i < solvers.size(); ++i) {
     const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
     for (std::size_t k = 0; k < scenes.size(); ++k) {
-      const auto& scene = scenes[k];
-      const auto& s = results[k].s;
-      const double seconds = results[k].seconds;
-      const auto peak = s.peak();
-      all_converged = all_converged && s.converged;
-      out.add({{"method", std::string("plane")},
-               {"tau", p.tau[i]},
-               {"speed", scene.speed},
-               {"vtau", scene.speed * p.tau[i]},
-               {"a0", s.a},
-               {"b0", s.b},
-               {"a_long_term", s.a_long_term},
-               {"chi", s.chi},
-               {"pmax", peak.pressure},
-               {"pmax_x", peak.x},
-               {"seconds", seconds},
-               {"converged", s.converged},
-               {"iterations", static_cast<long long>(s.iterations)},
-               {"residual", s.residual}});
-      if (!s.converged)
-        out.note("viscoroll-solve: plane solution for " + label(p, p.tau[i], scene.speed) +
-                 " did not converge");
+      all_converged = all_converged && results[k].converged;
+      report(p.tau[i], scenes[k], results[k].s, results[k].seconds);
     }
   }
   return all_converged ? 0 : 1;
+}
+
+/// The material of the problem at relaxation time `tau`.
+viscoroll::StandardLinearSolid<double> material(const Problem& p, double tau) {
+  return {p.mu_d, p.nu, p.f, tau};
+}
+
+/// The warnings and the failure of one 3-D solution, for stderr.
+template <class Solution>
+void note_outcome(Output& out, const char* method, const std::string& which, const Solution& s) {
+  for (const auto& w : s.warnings)
+    out.note(std::string("viscoroll-solve: warning: ") + method + " solution for " + which + ": " +
+             w);
+  if (!s.converged)
+    out.note(std::string("viscoroll-solve: ") + method + " solution for " + which +
+             " did not converge: " + s.reason);
+}
+
+/// --method needs --c2 (line, bem).
+double required_c2(const Problem& p, const char* method) {
+  if (!p.c2)
+    throw std::invalid_argument(std::string("viscoroll-solve: --method ") + method +
+                                " needs --c2; " + viscoroll::cli::usage());
+  return *p.c2;
+}
+
+int run_plane(const Problem& p, Output& out) {
+  return run_sweeps(
+      p, out,
+      [&](double speed) {
+        return viscoroll::PlaneScene<double>{p.c1, p.load, speed};
+      },
+      [&](double tau) { return viscoroll::PlaneSolverD(material(p, tau)); },
+      [&](double tau, const auto& scene, const auto& s, double seconds) {
+        const auto peak = s.peak();
+        out.add({{"method", std::string("plane")},
+                 {"tau", tau},
+                 {"speed", scene.speed},
+                 {"vtau", scene.speed * tau},
+                 {"a0", s.a},
+                 {"b0", s.b},
+                 {"a_long_term", s.a_long_term},
+                 {"chi", s.chi},
+                 {"pmax", peak.pressure},
+                 {"pmax_x", peak.x},
+                 {"seconds", seconds},
+                 {"converged", s.converged},
+                 {"iterations", static_cast<long long>(s.iterations)},
+                 {"residual", s.residual}});
+        if (!s.converged)
+          out.note("viscoroll-solve: plane solution for " + label(p, tau, scene.speed) +
+                   " did not converge");
+      });
 }
 
 /// --grid for the line method: LineOptions::terms, default 6.
@@ -532,63 +569,43 @@ int line_terms(const Problem& p) {
 /// of 16 in the given order, each speed seeded with the previous converged iterated solution of
 /// its chunk (continuation; a closed form carries no more than the solver's own seed).
 int run_line(const Problem& p, Output& out) {
-  using Solver = viscoroll::LineSolverD;
-  using Solution = Solver::Solution;
-  if (!p.c2)
-    throw std::invalid_argument("viscoroll-solve: --method line needs --c2; " +
-                                viscoroll::cli::usage());
+  const double c2 = required_c2(p, "line");
   viscoroll::LineOptions options;
   options.terms = line_terms(p);
-  std::vector<viscoroll::LineScene<double>> scenes;
-  for (double speed : p.speeds) {
-    scenes.push_back({p.c1, *p.c2, p.load, speed});
-    scenes.back().validate();
-  }
-  std::vector<Solver> solvers;
-  for (double tau : p.tau)
-    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau), options);
-  out.open();
-  bool all_converged = true;
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
-      const auto& scene = scenes[k];
-      const Solution& s = results[k].s;
-      const double seconds = results[k].seconds;
-      const auto peak = s.strip(0.0).peak();
-      all_converged = all_converged && s.converged;
-      out.add({{"method", std::string("line")},
-               {"tau", p.tau[i]},
-               {"speed", scene.speed},
-               {"vtau", scene.speed * p.tau[i]},
-               {"a0", s.a(0.0)},
-               {"b0", s.b(0.0)},
-               {"l", s.l()},
-               {"y_minus", -s.l()},
-               {"y_plus", s.l()},
-               {"d", s.d},
-               {"a_long_term", s.a_long_term},
-               {"l0", s.l_long_term},
-               {"d0", s.d_long_term},
-               {"chi", s.chi},
-               {"pmax", peak.pressure},
-               {"pmax_x", peak.x},
-               {"seconds", seconds},
-               {"converged", s.converged},
-               {"root", s.root},
-               {"iterations", static_cast<long long>(s.iterations)},
-               {"residual", s.residual},
-               {"terms", static_cast<long long>(options.terms)},
-               {"reason", s.reason},
-               {"warnings", s.warnings}});
-      const std::string which = label(p, p.tau[i], scene.speed);
-      for (const auto& w : s.warnings)
-        out.note("viscoroll-solve: warning: line solution for " + which + ": " + w);
-      if (!s.converged)
-        out.note("viscoroll-solve: line solution for " + which + " did not converge: " + s.reason);
-    }
-  }
-  return all_converged ? 0 : 1;
+  return run_sweeps(
+      p, out,
+      [&](double speed) {
+        return viscoroll::LineScene<double>{p.c1, c2, p.load, speed};
+      },
+      [&](double tau) { return viscoroll::LineSolverD(material(p, tau), options); },
+      [&](double tau, const auto& scene, const auto& s, double seconds) {
+        const auto peak = s.strip(0.0).peak();
+        out.add({{"method", std::string("line")},
+                 {"tau", tau},
+                 {"speed", scene.speed},
+                 {"vtau", scene.speed * tau},
+                 {"a0", s.a(0.0)},
+                 {"b0", s.b(0.0)},
+                 {"l", s.l()},
+                 {"y_minus", -s.l()},
+                 {"y_plus", s.l()},
+                 {"d", s.d},
+                 {"a_long_term", s.a_long_term},
+                 {"l0", s.l_long_term},
+                 {"d0", s.d_long_term},
+                 {"chi", s.chi},
+                 {"pmax", peak.pressure},
+                 {"pmax_x", peak.x},
+                 {"seconds", seconds},
+                 {"converged", s.converged},
+                 {"root", s.root},
+                 {"iterations", static_cast<long long>(s.iterations)},
+                 {"residual", s.residual},
+                 {"terms", static_cast<long long>(options.terms)},
+                 {"reason", s.reason},
+                 {"warnings", s.warnings}});
+        note_outcome(out, "line", label(p, tau, scene.speed), s);
+      });
 }
 
 /// --grid for the bem method: elements per semi-axis, default 16.
@@ -606,67 +623,47 @@ int bem_grid(const Problem& p) {
 /// long-term contact), and the speeds are swept as the line method's are, each seeded with the
 /// previous converged contact of its chunk.
 int run_bem(const Problem& p, Output& out) {
-  using Solver = viscoroll::BemSolverD;
-  using Solution = viscoroll::BemSolution<double>;
-  if (!p.c2)
-    throw std::invalid_argument("viscoroll-solve: --method bem needs --c2; " +
-                                viscoroll::cli::usage());
+  const double c2 = required_c2(p, "bem");
   viscoroll::BemOptions options;
   options.grid = bem_grid(p);
-  std::vector<viscoroll::BemScene<double>> scenes;
-  for (double speed : p.speeds) {
-    scenes.push_back({p.c1, *p.c2, p.load, speed});
-    scenes.back().validate();
-  }
-  std::vector<Solver> solvers;
-  for (double tau : p.tau)
-    solvers.emplace_back(viscoroll::StandardLinearSolid<double>(p.mu_d, p.nu, p.f, tau), options);
-  out.open();
-  bool all_converged = true;
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
-      const auto& scene = scenes[k];
-      const Solution& s = results[k].s;
-      const double seconds = results[k].seconds;
-      all_converged = all_converged && s.converged;
-      std::size_t peak = 0;
-      for (std::size_t q = 0; q < s.pressure.size(); ++q)
-        if (s.pressure[q] > s.pressure[peak]) peak = q;
-      const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
-      out.add({{"method", std::string("bem")},
-               {"tau", p.tau[i]},
-               {"speed", scene.speed},
-               {"vtau", scene.speed * p.tau[i]},
-               {"a0", s.a0},
-               {"b0", s.b0},
-               {"l", s.l},
-               {"y_minus", -s.l},
-               {"y_plus", s.l},
-               {"d", s.d},
-               {"a_long_term", s.long_term.a},
-               {"l0", s.long_term.b},
-               {"d0", s.long_term.d},
-               {"chi", s.chi},
-               {"pmax", s.pressure[peak]},
-               {"pmax_x", s.grid.x(peak_i)},
-               {"seconds", seconds},
-               {"converged", s.converged},
-               {"iterations", static_cast<long long>(s.iterations)},
-               {"gmres_iterations", static_cast<long long>(s.krylov_iterations)},
-               {"residual", s.residual},
-               {"grid", static_cast<long long>(options.grid)},
-               {"cells", static_cast<long long>(s.grid.size())},
-               {"reason", s.reason},
-               {"warnings", s.warnings}});
-      const std::string which = label(p, p.tau[i], scene.speed);
-      for (const auto& w : s.warnings)
-        out.note("viscoroll-solve: warning: bem solution for " + which + ": " + w);
-      if (!s.converged)
-        out.note("viscoroll-solve: bem solution for " + which + " did not converge: " + s.reason);
-    }
-  }
-  return all_converged ? 0 : 1;
+  return run_sweeps(
+      p, out,
+      [&](double speed) {
+        return viscoroll::BemScene<double>{p.c1, c2, p.load, speed};
+      },
+      [&](double tau) { return viscoroll::BemSolverD(material(p, tau), options); },
+      [&](double tau, const auto& scene, const auto& s, double seconds) {
+        std::size_t peak = 0;
+        for (std::size_t q = 0; q < s.pressure.size(); ++q)
+          if (s.pressure[q] > s.pressure[peak]) peak = q;
+        const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
+        out.add({{"method", std::string("bem")},
+                 {"tau", tau},
+                 {"speed", scene.speed},
+                 {"vtau", scene.speed * tau},
+                 {"a0", s.a0},
+                 {"b0", s.b0},
+                 {"l", s.l},
+                 {"y_minus", -s.l},
+                 {"y_plus", s.l},
+                 {"d", s.d},
+                 {"a_long_term", s.long_term.a},
+                 {"l0", s.long_term.b},
+                 {"d0", s.long_term.d},
+                 {"chi", s.chi},
+                 {"pmax", s.pressure[peak]},
+                 {"pmax_x", s.grid.x(peak_i)},
+                 {"seconds", seconds},
+                 {"converged", s.converged},
+                 {"iterations", static_cast<long long>(s.iterations)},
+                 {"gmres_iterations", static_cast<long long>(s.krylov_iterations)},
+                 {"residual", s.residual},
+                 {"grid", static_cast<long long>(options.grid)},
+                 {"cells", static_cast<long long>(s.grid.size())},
+                 {"reason", s.reason},
+                 {"warnings", s.warnings}});
+        note_outcome(out, "bem", label(p, tau, scene.speed), s);
+      });
 }
 
 }  // namespace
