@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <boost/math/special_functions/fpclassify.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip_pressure.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -190,6 +191,8 @@ class LineSolver {
   const LineOptions& options() const { return options_; }
 
   /// Solves the scene; `start` (a solution of a nearby scene, same material) seeds the iteration.
+  /// A seed that is not a converged, finite solution is set aside, and an iteration from a seed
+  /// that stops short is run again from the cold start; either is said in `warnings`.
   /// Throws std::invalid_argument for an invalid scene; a non-converged iteration is returned
   /// with converged == false and the reason.
   Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const;
@@ -252,6 +255,40 @@ class LineSolver {
     std::string reason = "iteration limit";
     int iterations = 0;
   };
+
+  /// rolling() from `start` where it can seed the iteration, else from the cold start; a seeded
+  /// iteration that stops short is run again from the cold start. The result's warnings say when
+  /// a seed was set aside, so that a bad seed never decides the answer.
+  Solution rolling_from(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
+                        Real f, Real vtau, const Solution* start) const {
+    if (start == nullptr) return rolling(scene, slow, c, f, vtau, nullptr);
+    if (!usable_seed(*start)) {
+      Solution cold = rolling(scene, slow, c, f, vtau, nullptr);
+      cold.warnings.push_back(
+          "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
+          "solved from the cold start");
+      return cold;
+    }
+    Solution seeded = rolling(scene, slow, c, f, vtau, start);
+    if (seeded.converged) return seeded;
+    Solution cold = rolling(scene, slow, c, f, vtau, nullptr);
+    cold.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
+                            "): solved again from the cold start");
+    return cold;
+  }
+
+  /// A converged solution whose shape and penetration are finite.
+  static bool usable_seed(const Solution& s) {
+    const auto finite = [](const std::vector<Real>& v) {
+      for (const Real& x : v)
+        if (!(boost::math::isfinite)(x)) return false;
+      return true;
+    };
+    return s.converged && !s.shape.alpha.empty() && finite(s.shape.alpha) &&
+           finite(s.shape.beta) && (boost::math::isfinite)(s.shape.l) && s.shape.l > 0 &&
+           (boost::math::isfinite)(s.shape.a_ref) && s.shape.a_ref > 0 &&
+           (boost::math::isfinite)(s.d);
+  }
 
   Solution rolling(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
                    Real f, Real vtau, const Solution* start) const {
@@ -698,7 +735,7 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
         // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
         return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");
       }
-      if (vtau > eps * slow.a0) return rolling(scene, slow, c, f, vtau, start);
+      if (vtau > eps * slow.a0) return rolling_from(scene, slow, c, f, vtau, start);
     }
   }
   return closed_form(scene, slow, slow, c, f, "static (closed form)");
