@@ -34,6 +34,9 @@
 #include <vector>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/material/dma_fit.hpp>
+#include <viscoroll/material/prony.hpp>
+#include <viscoroll/material/temperature_shift.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
 
@@ -235,7 +238,7 @@ class Output {
     if (options_.format == Format::json) {
       std::cout << json_line(r) << "\n";
     } else {
-      if (count_ == 1) table_header();
+      if (count_ == 1) table_header(r);
       table_row(r);
     }
     std::cout.flush();
@@ -270,8 +273,15 @@ class Output {
  private:
   bool three_d() const { return method_ != Method::plane; }
 
-  void table_header() {
-    std::printf("%-12s %-12s %-12s %-13s %-13s", "tau", "speed", "Vtau/a_lt", "a0", "b0");
+  /// A prony material's table has the temperature and a_T where the others have tau and
+  /// V tau / a_lt.
+  static bool prony_table(const Record& r) { return find(r, "temperature") != nullptr; }
+
+  void table_header(const Record& first) {
+    if (prony_table(first))
+      std::printf("%-12s %-12s %-12s %-13s %-13s", "T_degC", "speed", "a_T", "a0", "b0");
+    else
+      std::printf("%-12s %-12s %-12s %-13s %-13s", "tau", "speed", "Vtau/a_lt", "a0", "b0");
     if (three_d()) std::printf(" %-13s %-13s", "l", "d");
     std::printf(" %-13s %s\n", "chi", "converged");
   }
@@ -285,9 +295,11 @@ class Output {
 
   void table_row(const Record& r) {
     const Value* converged = find(r, "converged");
-    std::printf("%-12s %-12s %-12s %-13s %-13s", cell(real(r, "tau"), 6).c_str(),
+    const bool prony = prony_table(r);
+    std::printf("%-12s %-12s %-12s %-13s %-13s",
+                cell(real(r, prony ? "temperature" : "tau"), 6).c_str(),
                 cell(real(r, "speed"), 6).c_str(),
-                cell(real(r, "vtau") / real(r, "a_long_term"), 6).c_str(),
+                cell(prony ? real(r, "a_T") : real(r, "vtau") / real(r, "a_long_term"), 6).c_str(),
                 cell(real(r, "a0"), 7).c_str(), cell(real(r, "b0"), 7).c_str());
     if (three_d())
       std::printf(" %-13s %-13s", cell(real(r, "l"), 7).c_str(), cell(real(r, "d"), 7).c_str());
@@ -380,10 +392,82 @@ struct Problem {
   std::vector<double> speeds;
   std::optional<long> grid;
   unsigned threads = 0;  ///< of the speed sweep (0: every core)
+  /// A prony material (bem only) at its reference temperature, its shift law, and the
+  /// temperatures to solve at (degrees Celsius; one NaN without a shift law).
+  std::optional<viscoroll::PronyRelaxation<double>> prony;
+  std::optional<viscoroll::ShiftLaw<double>> shift;
+  std::vector<double> temperatures;
 };
 
 Problem from_options(const SolveOptions& o) {
-  return {*o.method, o.mu_d, o.nu, o.f, o.tau, o.c1, o.c2, o.load, o.speeds, o.grid, o.threads};
+  return {*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
+          o.load,    o.speeds, o.grid, o.threads, {},    {},   {}};
+}
+
+/// The prony material of a scene file: its terms, or the fit of its DMA file (the report on
+/// stderr, a poor fit as a warning); its shift law; the temperatures to solve at (--temperature,
+/// else the scene's, else the law's t_ref; one NaN without a law).
+void set_prony(Problem& p, const viscoroll::cli::PronyModel& m,
+               const std::vector<double>& scene_temperatures, const SolveOptions& o) {
+  const auto fail = [&](const std::string& message) {
+    throw std::invalid_argument("viscoroll-solve: " + o.scene + ": " + message);
+  };
+  if (m.shift) {
+    if (m.shift->law == "wlf")
+      p.shift = viscoroll::WlfShift<double>(m.shift->c1, m.shift->c2, m.shift->t_ref);
+    else
+      p.shift = viscoroll::ArrheniusShift<double>(m.shift->activation_energy, m.shift->t_ref);
+  }
+  if (m.dma.empty()) {
+    std::vector<viscoroll::RelaxationTerm<double>> terms;
+    for (const auto& t : m.terms) terms.push_back({t.g, t.tau});
+    try {
+      p.prony.emplace(m.g_inf, m.nu, std::move(terms));
+    } catch (const std::invalid_argument& e) {
+      fail(std::string("material: ") + e.what());
+    }
+  } else {
+    fs::path path(m.dma);
+    if (path.is_relative()) path = (fs::path(o.scene).parent_path() / path).lexically_normal();
+    try {
+      const auto data = viscoroll::read_dma_csv_file<double>(path);
+      viscoroll::DmaFitOptions<double> options;
+      options.nu = m.nu;
+      options.shift = p.shift;
+      if (data.has_temperature && !p.shift)
+        fail("material.dma = \"" + m.dma +
+             "\" has a temperature_c column: give material.shift (wlf or arrhenius) to build the "
+             "master curve");
+      auto fit = viscoroll::fit_prony(data, options);
+      std::cerr << "viscoroll-solve: material.dma = " << path.string() << ": " << fit.report.summary
+                << "\n";
+      if (fit.report.poor)
+        std::cerr << "viscoroll-solve: warning: material.dma = " << path.string()
+                  << ": a poor fit of the DMA data (largest relative error above the threshold); "
+                     "the solutions are of the fitted spectrum\n";
+      p.prony.emplace(std::move(fit.material));
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      if (what.starts_with("viscoroll-solve: ")) throw;
+      fail("material.dma = \"" + m.dma + "\": " + what);
+    }
+  }
+  p.temperatures = o.temperatures.empty() ? scene_temperatures : o.temperatures;
+  if (!o.temperatures.empty() && !p.shift)
+    throw std::invalid_argument(
+        "viscoroll-solve: --temperature is valid only with a material of model prony with a "
+        "shift law (material.shift); " +
+        o.scene + " has none");
+  if (p.temperatures.empty())
+    p.temperatures = {p.shift ? viscoroll::reference_temperature(*p.shift) : std::nan("")};
+  if (p.shift)
+    for (const double t : p.temperatures) try {
+        (void)viscoroll::shift_factor(*p.shift, t);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("viscoroll-solve: ") +
+                                    (o.temperatures.empty() ? o.scene + ": " : "--temperature: ") +
+                                    e.what());
+      }
 }
 
 Problem from_scene(const SolveOptions& o) {
@@ -407,12 +491,19 @@ Problem from_scene(const SolveOptions& o) {
         using M = std::decay_t<decltype(m)>;
         if constexpr (std::is_same_v<M, ElasticModel>) {
           p.mu_d = m.mu, p.nu = m.nu, p.f = 0, p.tau = {0.0};
+        } else if constexpr (std::is_same_v<M, PronyModel>) {
+          set_prony(p, m, scene.temperatures, o);
         } else {
           static_assert(std::is_same_v<M, StandardLinearSolidModel>);
           p.mu_d = m.mu_d, p.nu = m.nu, p.f = m.f, p.tau = {m.tau};
         }
       },
       scene.material);
+  if (!p.prony && !o.temperatures.empty())
+    throw std::invalid_argument(
+        "viscoroll-solve: --temperature is valid only with a material of model prony with a "
+        "shift law (material.shift); " +
+        o.scene + " has a material without temperature");
   std::visit(
       [&](const auto& r) {
         using R = std::decay_t<decltype(r)>;
@@ -431,6 +522,14 @@ Problem from_scene(const SolveOptions& o) {
 std::string label(const Problem& p, double tau, double speed) {
   using viscoroll::cli::scene_detail::shortest;
   return "tau = " + shortest(tau) + (p.speeds.size() > 1 ? ", speed = " + shortest(speed) : "");
+}
+
+/// "temperature = T" (or "the prony material"), and ", speed = V" in a sweep of several speeds.
+std::string temperature_label(const Problem& p, double temperature, double speed) {
+  using viscoroll::cli::scene_detail::shortest;
+  return (std::isnan(temperature) ? std::string("the prony material")
+                                  : "temperature = " + shortest(temperature)) +
+         (p.speeds.size() > 1 ? ", speed = " + shortest(speed) : "");
 }
 
 /// A solver whose solutions carry the wall time of their solve (the output's `seconds`), in the
@@ -475,27 +574,28 @@ std::vector<typename Timed<Solver>::Solution> sweep_speeds(const Solver& solver,
   return viscoroll::sweep(Timed<Solver>{solver}, scene, p.speeds, options);
 }
 
-/// Runs every (tau, speed) of the problem: `scene_at(speed)` builds a scene and `solver_for(tau)`
-/// a solver, all of them validated before any output is opened; then each tau's speeds are swept
-/// and `report(tau, scene, solution, seconds)` adds the record and any notes. Returns the exit
+/// Runs every (key, speed) of the problem, the keys its taus (or a prony material's temperatures):
+/// `scene_at(speed)` builds a scene and `solver_for(key)` a solver, all of them validated before
+/// any output is opened; then each key's speeds are swept and `report(key, scene, solution,
+/// seconds)` adds the record and any notes. Returns the exit
 /// status (0 all converged, 1 not).
 template <class SceneAt, class SolverFor, class Report>
-int run_sweeps(const Problem& p, Output& out, SceneAt scene_at, SolverFor solver_for,
-               Report report) {
+int run_sweeps(const Problem& p, const std::vector<double>& keys, Output& out, SceneAt scene_at,
+               SolverFor solver_for, Report report) {
   std::vector<std::invoke_result_t<SceneAt, double>> scenes;
   for (double speed : p.speeds) {
     scenes.push_back(scene_at(speed));
     scenes.back().validate();
   }
   std::vector<std::invoke_result_t<SolverFor, double>> solvers;
-  for (double tau : p.tau) solvers.push_back(solver_for(tau));
+  for (double key : keys) solvers.push_back(solver_for(key));
   out.open();
   bool all_converged = true;
   for (std::size_t i = 0; i < solvers.size(); ++i) {
     const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
     for (std::size_t k = 0; k < scenes.size(); ++k) {
       all_converged = all_converged && results[k].converged;
-      report(p.tau[i], scenes[k], results[k].s, results[k].seconds);
+      report(keys[i], scenes[k], results[k].s, results[k].seconds);
     }
   }
   return all_converged ? 0 : 1;
@@ -527,7 +627,7 @@ double required_c2(const Problem& p, const char* method) {
 
 int run_plane(const Problem& p, Output& out) {
   return run_sweeps(
-      p, out,
+      p, p.tau, out,
       [&](double speed) {
         return viscoroll::PlaneScene<double>{p.c1, p.load, speed};
       },
@@ -573,7 +673,7 @@ int run_line(const Problem& p, Output& out) {
   viscoroll::LineOptions options;
   options.terms = line_terms(p);
   return run_sweeps(
-      p, out,
+      p, p.tau, out,
       [&](double speed) {
         return viscoroll::LineScene<double>{p.c1, c2, p.load, speed};
       },
@@ -619,29 +719,14 @@ int bem_grid(const Problem& p) {
   return static_cast<int>(n);
 }
 
-/// The boundary-element solver; every solve shares one grid (it is sized by the static
-/// long-term contact), and the speeds are swept as the line method's are, each seeded with the
-/// previous converged contact of its chunk.
-int run_bem(const Problem& p, Output& out) {
-  const double c2 = required_c2(p, "bem");
-  viscoroll::BemOptions options;
-  options.grid = bem_grid(p);
-  return run_sweeps(
-      p, out,
-      [&](double speed) {
-        return viscoroll::BemScene<double>{p.c1, c2, p.load, speed};
-      },
-      [&](double tau) { return viscoroll::BemSolverD(material(p, tau), options); },
-      [&](double tau, const auto& scene, const auto& s, double seconds) {
-        std::size_t peak = 0;
-        for (std::size_t q = 0; q < s.pressure.size(); ++q)
-          if (s.pressure[q] > s.pressure[peak]) peak = q;
-        const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
-        out.add({{"method", std::string("bem")},
-                 {"tau", tau},
-                 {"speed", scene.speed},
-                 {"vtau", scene.speed * tau},
-                 {"a0", s.a0},
+/// The fields of a bem record after its `head` (method and the material's keys, speed).
+template <class Solution>
+Record bem_record(Record head, const Solution& s, double seconds, int grid) {
+  std::size_t peak = 0;
+  for (std::size_t q = 0; q < s.pressure.size(); ++q)
+    if (s.pressure[q] > s.pressure[peak]) peak = q;
+  const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
+  Record tail = {{"a0", s.a0},
                  {"b0", s.b0},
                  {"l", s.l},
                  {"y_minus", -s.l},
@@ -658,10 +743,54 @@ int run_bem(const Problem& p, Output& out) {
                  {"iterations", static_cast<long long>(s.iterations)},
                  {"gmres_iterations", static_cast<long long>(s.krylov_iterations)},
                  {"residual", s.residual},
-                 {"grid", static_cast<long long>(options.grid)},
+                 {"grid", static_cast<long long>(grid)},
                  {"cells", static_cast<long long>(s.grid.size())},
                  {"reason", s.reason},
-                 {"warnings", s.warnings}});
+                 {"warnings", s.warnings}};
+  head.insert(head.end(), tail.begin(), tail.end());
+  return head;
+}
+
+/// The prony material at `temperature` (the reference material when there is no shift law).
+viscoroll::PronyRelaxation<double> prony_at(const Problem& p, double temperature) {
+  return p.shift ? viscoroll::at_temperature(*p.prony, *p.shift, temperature) : *p.prony;
+}
+
+/// The boundary-element solver; every solve shares one grid (it is sized by the static
+/// long-term contact), and the speeds are swept as the line method's are, each seeded with the
+/// previous converged contact of its chunk. A prony material is solved at each temperature.
+int run_bem(const Problem& p, Output& out) {
+  const double c2 = required_c2(p, "bem");
+  viscoroll::BemOptions options;
+  options.grid = bem_grid(p);
+  const auto scene_at = [&](double speed) {
+    return viscoroll::BemScene<double>{p.c1, c2, p.load, speed};
+  };
+  if (p.prony)
+    return run_sweeps(
+        p, p.temperatures, out, scene_at,
+        [&](double temperature) {
+          return viscoroll::BemSolver<double, viscoroll::PronyRelaxation<double>>(
+              prony_at(p, temperature), options);
+        },
+        [&](double temperature, const auto& scene, const auto& s, double seconds) {
+          const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
+          out.add(bem_record({{"method", std::string("bem")},
+                              {"temperature", temperature},
+                              {"a_T", a_t},
+                              {"speed", scene.speed}},
+                             s, seconds, options.grid));
+          note_outcome(out, "bem", temperature_label(p, temperature, scene.speed), s);
+        });
+  return run_sweeps(
+      p, p.tau, out, scene_at,
+      [&](double tau) { return viscoroll::BemSolverD(material(p, tau), options); },
+      [&](double tau, const auto& scene, const auto& s, double seconds) {
+        out.add(bem_record({{"method", std::string("bem")},
+                            {"tau", tau},
+                            {"speed", scene.speed},
+                            {"vtau", scene.speed * tau}},
+                           s, seconds, options.grid));
         note_outcome(out, "bem", label(p, tau, scene.speed), s);
       });
 }
@@ -673,7 +802,9 @@ int main(int argc, char** argv) {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     const Problem problem = options.scene.empty() ? from_options(options) : from_scene(options);
-    Output out(options, problem.method, problem.tau.size() * problem.speeds.size());
+    Output out(
+        options, problem.method,
+        (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());
     int status = 0;
     switch (problem.method) {
       case Method::plane:

@@ -41,7 +41,29 @@ struct StandardLinearSolidModel {
   double mu_d = 0, nu = 0, f = 0, tau = 0;
 };
 
-using MaterialModel = std::variant<ElasticModel, StandardLinearSolidModel>;
+/// One term of a Prony series in relaxation form: modulus g (Pa) and relaxation time tau (s).
+struct PronyTermSpec {
+  double g = 0, tau = 0;
+};
+
+/// A time-temperature shift (docs/materials.md): law "wlf" (c1, c2 in K, t_ref in degrees
+/// Celsius) or "arrhenius" (activation_energy in J/mol, t_ref).
+struct ShiftSpec {
+  std::string law;
+  double c1 = 0, c2 = 0, activation_energy = 0, t_ref = 0;
+};
+
+/// A generalised Maxwell solid in relaxation form, G(t) = g_inf + sum g exp(-t / tau): either its
+/// terms, or `dma`, a DMA CSV file (as written in the scene, relative to the scene file's
+/// directory) to fit them from (then g_inf is fitted too). Optionally a shift law.
+struct PronyModel {
+  double nu = 0, g_inf = 0;
+  std::vector<PronyTermSpec> terms;
+  std::string dma;
+  std::optional<ShiftSpec> shift;
+};
+
+using MaterialModel = std::variant<ElasticModel, StandardLinearSolidModel, PronyModel>;
 
 /// The doubly parabolic roller of the paper (Eq. 27): curvatures c1 across, c2 along (1/m).
 struct EllipsoidProfile {
@@ -63,7 +85,15 @@ struct Scene {
   std::vector<double> speeds;
   std::optional<Method> method;
   std::optional<long> grid;
+  /// The top level's "temperature" (degrees Celsius): a prony material with a shift only.
+  std::vector<double> temperatures;
 };
+
+/// The message for a prony material with a solver that takes one relaxation time.
+inline std::string prony_needs_bem() {
+  return "material.model 'prony': the plane and line solvers take one relaxation time so far; use "
+         "--method bem";
+}
 
 /// The largest scene file read, in bytes.
 inline constexpr std::size_t max_scene_bytes = std::size_t(1) << 20;
@@ -166,6 +196,10 @@ inline std::string range_of(std::string_view key) {
       {"load", "load > 0 (N; N/m for the plane method; finite)"},
       {"speeds", "speed >= 0 (m/s, finite)"},
       {"grid", "1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)"},
+      {"g_inf", "g_inf > 0 (Pa, finite)"},
+      {"g", "g >= 0 (Pa, finite)"},
+      {"activation_energy", "activation_energy > 0 (J/mol, finite)"},
+      {"temperature", "a finite temperature (degrees Celsius) above the shift law's limit"},
   };
   for (const auto& [name, range] : ranges)
     if (name == key) return std::string(range);
@@ -180,6 +214,102 @@ inline double ObjectReader::number(std::string_view key,
 inline bool positive(double x) { return x > 0; }
 inline bool non_negative(double x) { return x >= 0; }
 inline bool poisson(double x) { return x > -1 && x <= 0.5; }
+inline bool finite(double x) { return std::isfinite(x); }
+
+/// The shift law at `key` of `r` ("material.shift").
+inline ShiftSpec read_shift(const ObjectReader& r, std::string_view key) {
+  const std::string path = r.name(key);
+  const ObjectReader head(r.source(), r.at(key), path, {}, path);
+  ShiftSpec s;
+  s.law = head.string("law");
+  const auto number = [](const ObjectReader& o, std::string_view k,
+                         const std::function<bool(double)>& ok, std::string_view range) {
+    return o.checked_number(o.at(k), o.name(k), ok, range);
+  };
+  if (s.law == "wlf") {
+    const ObjectReader o(r.source(), r.at(key), path, {"law", "c1", "c2", "t_ref"},
+                         path + " of law wlf");
+    s.c1 = number(o, "c1", positive, "c1 > 0 (finite)");
+    s.c2 = number(o, "c2", positive, "c2 > 0 (K, finite)");
+    s.t_ref = number(
+        o, "t_ref", [](double) { return true; }, "t_ref finite (degrees Celsius)");
+  } else if (s.law == "arrhenius") {
+    const ObjectReader o(r.source(), r.at(key), path, {"law", "activation_energy", "t_ref"},
+                         path + " of law arrhenius");
+    s.activation_energy =
+        number(o, "activation_energy", positive, "activation_energy > 0 (J/mol, finite)");
+    s.t_ref = number(
+        o, "t_ref", [](double t) { return t > -273.15; },
+        "t_ref > -273.15 (degrees Celsius, finite)");
+  } else {
+    head.fail(head.name("law") + " = \"" + s.law + "\" is not one of wlf, arrhenius");
+  }
+  return s;
+}
+
+/// The prony material: nu, then either g_inf and terms or dma, and an optional shift.
+inline MaterialModel read_prony(const ObjectReader& r) {
+  PronyModel m;
+  m.nu = r.number("nu", poisson);
+  const bool terms = r.has("terms"), dma = r.has("dma");
+  if (terms && dma)
+    r.fail(r.name("terms") + " and " + r.name("dma") +
+           " are both given; give one (the relaxation terms, or a DMA CSV file to fit them from)");
+  if (!terms && !dma)
+    r.fail("missing key " + r.name("terms") + " (or " + r.name("dma") +
+           ", a DMA CSV file to fit the terms from)");
+  if (terms) {
+    m.g_inf = r.number("g_inf", positive);
+    const json& list = r.at("terms");
+    const std::string path = r.name("terms");
+    if (!list.is_array())
+      r.fail(path + " must be an array of objects {\"g\": ..., \"tau\": ...}, got " +
+             type_of(list));
+    if (list.empty()) r.fail(path + " is empty; give at least one term {\"g\": ..., \"tau\": ...}");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const std::string item = path + "[" + std::to_string(k) + "]";
+      const ObjectReader t(r.source(), list[k], item, {"g", "tau"}, item);
+      m.terms.push_back(
+          {t.checked_number(t.at("g"), t.name("g"), non_negative, "g >= 0 (Pa, finite)"),
+           t.checked_number(t.at("tau"), t.name("tau"), positive, "tau > 0 (s, finite)")});
+    }
+  } else {
+    if (r.has("g_inf"))
+      r.fail("unknown key " + r.name("g_inf") +
+             " with dma (the fit gives the long-term modulus; give g_inf with terms only)");
+    m.dma = r.string("dma");
+    if (m.dma.empty()) r.fail(r.name("dma") + " is empty; give a DMA CSV file's name");
+  }
+  if (r.has("shift")) m.shift = read_shift(r, "shift");
+  return m;
+}
+
+/// The shift law's limit on temperature: a number at which a_T is finite, with its range.
+inline void check_temperature(const ObjectReader& top, const std::string& label, double t,
+                              const ShiftSpec& shift) {
+  if (shift.law == "wlf") {
+    const double limit = shift.t_ref - shift.c2;
+    if (!(t > limit))
+      top.fail(label + " = " + shortest(t) +
+               " is outside the valid range temperature > t_ref - c2 = " + shortest(limit) +
+               " (degrees Celsius; the WLF shift is singular at t_ref - c2)");
+  } else if (!(t > -273.15)) {
+    top.fail(label + " = " + shortest(t) +
+             " is outside the valid range temperature > -273.15 (degrees Celsius)");
+  }
+  // a_T must be a finite positive number (WLF far below t_ref, Arrhenius near absolute zero).
+  const double log_a =
+      shift.law == "wlf"
+          ? -shift.c1 * (t - shift.t_ref) / (shift.c2 + t - shift.t_ref) * std::log(10.0)
+          : shift.activation_energy / 8.31446261815324 * (shift.t_ref - t) /
+                ((t + 273.15) * (shift.t_ref + 273.15));
+  const double a = std::exp(log_a);
+  if (!(std::isfinite(a) && a > 0))
+    top.fail(label + " = " + shortest(t) +
+             " is outside the valid range of a temperature at which the shift factor a_T is "
+             "finite and positive (ln a_T = " +
+             shortest(log_a) + ")");
+}
 
 struct MaterialReader {
   std::string model;
@@ -201,6 +331,7 @@ inline const std::vector<MaterialReader>& material_readers() {
                                          r.number("f", non_negative),
                                          r.number("tau", non_negative)};
        }},
+      {"prony", {"nu", "g_inf", "terms", "dma", "shift"}, read_prony},
   };
   return readers;
 }
@@ -360,9 +491,10 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   } catch (const json::exception& e) {
     throw std::invalid_argument("viscoroll-solve: " + source + ": not valid JSON: " + message(e));
   }
-  const ObjectReader top(source, root, "",
-                         {"description", "material", "roller", "load", "speeds", "method", "grid"},
-                         "the scene");
+  const ObjectReader top(
+      source, root, "",
+      {"description", "material", "roller", "load", "speeds", "method", "grid", "temperature"},
+      "the scene");
   Scene scene;
   if (top.has("description")) scene.description = top.string("description");
   scene.material = scene_detail::read_by_kind<MaterialModel>(top, "material", "model",
@@ -398,6 +530,28 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
                scene_detail::range_of("grid"));
     scene.grid = grid.get<long>();
   }
+  if (top.has("temperature")) {
+    const auto* prony = std::get_if<PronyModel>(&scene.material);
+    if (!prony || !prony->shift)
+      top.fail(
+          "temperature is given but the material has no shift law: it is valid only with a "
+          "material of model prony with a \"shift\" (wlf or arrhenius)");
+    const json& t = top.at("temperature");
+    const auto one = [&](const json& value, const std::string& label) {
+      const double x = top.checked_number(value, label, scene_detail::finite,
+                                          scene_detail::range_of("temperature"));
+      scene_detail::check_temperature(top, label, x, *prony->shift);
+      scene.temperatures.push_back(x);
+    };
+    if (t.is_array()) {
+      if (t.empty())
+        top.fail("temperature is empty; give a number or a non-empty list (degrees Celsius)");
+      for (std::size_t k = 0; k < t.size(); ++k)
+        one(t[k], "temperature[" + std::to_string(k) + "]");
+    } else {
+      one(t, "temperature");
+    }
+  }
   return scene;
 }
 
@@ -409,6 +563,8 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
     throw std::invalid_argument("viscoroll-solve: " + source + ": " + message);
   };
   const std::string m = method_name(method);
+  if (std::holds_alternative<PronyModel>(scene.material) && method != Method::bem)
+    fail(prony_needs_bem());
   if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)
     fail("roller.profile = \"cylinder\" suits the plane method only, not " + m +
          " (the line and bem methods need \"ellipsoid\" with c1 and c2)");

@@ -52,6 +52,9 @@ struct SolveOptions {
   std::string csv;       ///< --csv FILE: the sweep as CSV too (empty: none)
   std::string plot;      ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
   unsigned threads = 0;  ///< --threads N: threads of the speed sweep (0: every core)
+  /// --temperature T[,T...] (degrees Celsius): replaces the scene's "temperature"; valid only
+  /// with a scene whose material is a prony series with a shift law.
+  std::vector<double> temperatures;
 };
 
 inline std::string usage() {
@@ -59,7 +62,8 @@ inline std::string usage() {
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
          "[--csv FILE] [--plot DIR] [--threads N]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
-         "[--speed V[,V...]] [--format json|table] [--csv FILE] [--plot DIR] [--threads N]";
+         "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
+         "[--plot DIR] [--threads N]";
 }
 
 /// A finite number, the whole of `text`.
@@ -90,8 +94,9 @@ inline std::vector<double> parse_numbers(std::string_view option, std::string_vi
 /// which names the parameter.
 inline SolveOptions parse_solve_options(const std::vector<std::string_view>& args) {
   static const std::set<std::string_view> known = {
-      "--method", "--mu-d", "--nu",    "--f",      "--tau", "--speed", "--c1",     "--c2",
-      "--load",   "--grid", "--scene", "--format", "--csv", "--plot",  "--threads"};
+      "--method", "--mu-d", "--nu",      "--f",          "--tau",   "--speed",
+      "--c1",     "--c2",   "--load",    "--grid",       "--scene", "--format",
+      "--csv",    "--plot", "--threads", "--temperature"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -131,7 +136,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
         throw std::invalid_argument(
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
-            "--grid, --speed, --format, --csv, --plot and --threads may go with it)");
+            "--grid, --speed, --temperature, --format, --csv, --plot and --threads may go with "
+            "it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -151,6 +157,13 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     o.speeds = parse_numbers("--speed", required("--speed"));
   } else if (given.count("--speed")) {
     o.speeds = parse_numbers("--speed", given["--speed"]);
+  }
+  if (given.count("--temperature")) {
+    if (o.scene.empty())
+      throw std::invalid_argument(
+          "viscoroll-solve: --temperature is valid only with --scene and a material of model "
+          "prony with a shift law (the options describe a standard linear solid)");
+    o.temperatures = parse_numbers("--temperature", given["--temperature"]);
   }
   if (given.count("--grid")) {
     const std::string_view text = given["--grid"];

@@ -216,10 +216,18 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
   std::visit(
       [&](const auto& m) {
         using M = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<M, cli::ElasticModel>)
+        if constexpr (std::is_same_v<M, cli::ElasticModel>) {
           out.material = {true, m.mu, m.nu, 0.0, 0.0};
-        else
+        } else if constexpr (std::is_same_v<M, cli::PronyModel>) {
+          // The bindings solve one relaxation time so far (for every method); the command
+          // line's bem method takes a prony material.
+          throw std::invalid_argument(source + ": " + cli::prony_needs_bem() +
+                                      " (the command line viscoroll-solve; the Python bindings "
+                                      "do not take a prony material yet)");
+        } else {
+          static_assert(std::is_same_v<M, cli::StandardLinearSolidModel>);
           out.material = {false, m.mu_d, m.nu, m.f, m.tau};
+        }
       },
       in.material);
   std::visit(

@@ -153,8 +153,8 @@ TEST_CASE("cli scene file: the method's own ranges", "[cli][scene]") {
 
 TEST_CASE("cli scene file: the shipped scenes parse", "[cli][scene]") {
   const std::filesystem::path dir = std::filesystem::path(VISCOROLL_SOURCE_DIR) / "examples/scenes";
-  for (const char* name :
-       {"paper.json", "polyamide_cylinder.json", "rubber_roller.json", "rubber_ball.json"}) {
+  for (const char* name : {"paper.json", "polyamide_cylinder.json", "rubber_roller.json",
+                           "rubber_ball.json", "rubber_prony_bem.json", "rubber_dma_bem.json"}) {
     INFO(name);
     const std::string path = (dir / name).string();
     const Scene s = parse_scene(read_scene_file(path), path);
@@ -162,6 +162,22 @@ TEST_CASE("cli scene file: the shipped scenes parse", "[cli][scene]") {
     CHECK(s.method);
     CHECK(!s.speeds.empty());
   }
+  const std::string prony_path = (dir / "rubber_prony_bem.json").string();
+  const Scene prony = parse_scene(read_scene_file(prony_path), prony_path);
+  const auto* m = std::get_if<PronyModel>(&prony.material);
+  REQUIRE(m);
+  CHECK(m->terms.size() >= 10);
+  CHECK(m->shift);
+  CHECK(m->dma.empty());
+  CHECK(prony.temperatures.size() >= 2);
+  const std::string dma_path = (dir / "rubber_dma_bem.json").string();
+  const Scene dma = parse_scene(read_scene_file(dma_path), dma_path);
+  REQUIRE(std::holds_alternative<PronyModel>(dma.material));
+  CHECK(std::get<PronyModel>(dma.material).dma == "../data/dma_known_spectrum.csv");
+  CHECK(std::get<PronyModel>(dma.material).terms.empty());
+  CHECK_THROWS_WITH(check_scene_for_method(prony, Method::line, "p.json"),
+                    Catch::Contains("material.model 'prony': the plane and line solvers"));
+  CHECK_NOTHROW(check_scene_for_method(prony, Method::bem, "p.json"));
   CHECK_THROWS_WITH(read_scene_file(dir.string()), Catch::Contains("is a directory"));
   CHECK_THROWS_WITH(read_scene_file((dir / "none.json").string()), Catch::Contains("no such file"));
 }

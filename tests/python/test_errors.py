@@ -112,6 +112,33 @@ def test_from_json_file_errors(tmp_path):
         vr.Scene.from_json(write(tmp_path, "{"))
 
 
+@pytest.mark.parametrize("method", [None, "plane", "line", "bem"])
+def test_from_json_of_a_prony_scene_raises_the_command_lines_message(tmp_path, method):
+    """A prony material (several relaxation times) is the command line's bem method's; the
+    bindings raise ValueError with the command line's message, whatever the method."""
+    document = json.loads(json.dumps(GOOD))
+    document["material"] = {"model": "prony", "nu": 0.5, "g_inf": 1.0e6,
+                            "terms": [{"g": 2.0e6, "tau": 1e-3}, {"g": 5.0e5, "tau": 1e-1}],
+                            "shift": {"law": "wlf", "c1": 8.86, "c2": 101.6, "t_ref": 25}}
+    document["temperature"] = [0, 25]
+    if method is None:
+        document.pop("method")
+    else:
+        document["method"] = method
+    path = write(tmp_path, document)
+    with pytest.raises(ValueError) as error:
+        vr.Scene.from_json(path)
+    message = str(error.value)
+    assert message.startswith(str(path) + ": ")
+    assert ("material.model 'prony': the plane and line solvers take one relaxation time so far; "
+            "use --method bem") in message
+
+
+def test_from_json_of_the_shipped_prony_scene_raises(scenes_dir):
+    with pytest.raises(ValueError, match="material.model 'prony'"):
+        vr.Scene.from_json(scenes_dir / "rubber_prony_bem.json")
+
+
 def test_non_convergence_is_on_the_result():
     # Every result says whether it converged and why it stopped; nothing raises.
     r = vr.solve(scene(), speed=1.0)
