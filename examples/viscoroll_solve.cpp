@@ -14,6 +14,10 @@
 // y_plus, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason, iterations (active set),
 // gmres_iterations, residual and warnings. docs/bem.md. Warnings of either method also go to
 // stderr, one per line; they do not change the exit status.
+// A scene's material of model "prony" (a Prony series in relaxation form, or fitted from a DMA
+// file, with an optional WLF or Arrhenius shift) is the bem method's only: it is solved by
+// BemSolver<double, PronyRelaxation<double>> at each temperature (--temperature, else the scene's,
+// else t_ref) and each speed, each line carrying temperature and a_T in place of tau and vtau.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
