@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 #include <viscoroll/material/elastic.hpp>
+#include <viscoroll/material/prony.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
@@ -45,12 +46,22 @@ void check_scene(const viscoroll::cli::Scene& s) {
     require(std::isfinite(radius) && radius > 0);
     c1 = 1 / radius;
   }
-  if (const auto* m = std::get_if<ElasticModel>(&s.material))
+  if (const auto* m = std::get_if<ElasticModel>(&s.material)) {
     (void)viscoroll::Elastic<double>(m->mu, m->nu);
-  else {
-    const auto& sls = std::get<StandardLinearSolidModel>(s.material);
-    (void)viscoroll::StandardLinearSolid<double>(sls.mu_d, sls.nu, sls.f, sls.tau);
+  } else if (const auto* sls = std::get_if<StandardLinearSolidModel>(&s.material)) {
+    (void)viscoroll::StandardLinearSolid<double>(sls->mu_d, sls->nu, sls->f, sls->tau);
+  } else {
+    const auto& prony = std::get<PronyModel>(s.material);
+    if (prony.dma.empty()) {  // a DMA file is read and fitted by the program, not here
+      std::vector<viscoroll::RelaxationTerm<double>> terms;
+      for (const auto& t : prony.terms) terms.push_back({t.g, t.tau});
+      (void)viscoroll::PronyRelaxation<double>(prony.g_inf, prony.nu, terms);
+    }
   }
+  // Temperatures only with a shift law (the reader's promise).
+  const auto* prony = std::get_if<PronyModel>(&s.material);
+  require(s.temperatures.empty() || (prony != nullptr && prony->shift.has_value()));
+  for (double t : s.temperatures) require(std::isfinite(t));
   for (double v : s.speeds) {
     try {
       viscoroll::PlaneScene<double>{c1, s.load, v}.validate();
