@@ -150,21 +150,31 @@ SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, con
   return std::make_shared<SolvedT>(std::move(s), tau, at.speed, grid, seconds);
 }
 
-/// viscoroll::sweep of a seeded method over `speeds` from the scene `at` (its speed replaced).
-template <class SolvedT, class Solver, class Scene>
-std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
-                                    std::span<const double> speeds, double tau, int grid,
-                                    const SweepOptions& options) {
-  auto make = [tau, grid](const typename Solver::Solution& s, double speed,
-                          double seconds) -> SolvedPtr {
-    return std::make_shared<SolvedT>(s, tau, speed, grid, seconds);
-  };
-  const TimedSolver<Solver, decltype(make)> timed{solver, make};
+/// viscoroll::sweep over `speeds` from the scene `at` (its speed replaced); `make` builds each
+/// result's Solved on the worker thread, as TimedSolver describes.
+template <class Solver, class Scene, class Make>
+std::vector<SolvedPtr> sweep_timed(const Solver& solver, const Scene& at,
+                                   std::span<const double> speeds, Make make,
+                                   const SweepOptions& options) {
+  const TimedSolver<Solver, Make> timed{solver, std::move(make)};
   auto solutions = sweep(timed, at, speeds, options);
   std::vector<SolvedPtr> out;
   out.reserve(solutions.size());
   for (auto& s : solutions) out.push_back(std::move(s.solved));
   return out;
+}
+
+/// sweep_timed for a seeded method (line: SolvedT = LineSolved; bem: BemSolved).
+template <class SolvedT, class Solver, class Scene>
+std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
+                                    std::span<const double> speeds, double tau, int grid,
+                                    const SweepOptions& options) {
+  return sweep_timed(
+      solver, at, speeds,
+      [tau, grid](const typename Solver::Solution& s, double speed, double seconds) -> SolvedPtr {
+        return std::make_shared<SolvedT>(s, tau, speed, grid, seconds);
+      },
+      options);
 }
 
 // The solvers (module.cpp: plane; solve_line.cpp; solve_bem.cpp). `scene` was checked for the

@@ -119,15 +119,12 @@ std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const doubl
   const PlaneScene<double> at = plane_scene(scene, 0.0);
   for (const double v : speeds) plane_scene(scene, v);
   const double tau = scene.material.tau;
-  auto make = [tau](const PlaneSolution& s, double speed, double seconds) -> SolvedPtr {
-    return std::make_shared<PlaneSolved>(s, tau, speed, seconds);
-  };
-  const TimedSolver<PlaneSolver, decltype(make)> timed{solver, make};
-  auto solutions = sweep(timed, at, speeds, options);
-  std::vector<SolvedPtr> out;
-  out.reserve(solutions.size());
-  for (auto& s : solutions) out.push_back(std::move(s.solved));
-  return out;
+  return sweep_timed(
+      solver, at, speeds,
+      [tau](const PlaneSolution& s, double speed, double seconds) -> SolvedPtr {
+        return std::make_shared<PlaneSolved>(s, tau, speed, seconds);
+      },
+      options);
 }
 
 // ---------------------------------------------------------------------------------------------
