@@ -3,32 +3,21 @@
 // stops short (the same scene at 1000 times the load) is followed by the cold start, with a
 // warning; a good seed (a neighbouring speed) is used as before, without one.
 #include <catch2/catch.hpp>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <viscoroll/line/line_solver.hpp>
 
 #include "support/paper_scene.hpp"
+#include "support/same_line_solution.hpp"
 
 namespace {
 
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+using viscoroll::testing::require_same_solution;
 
 bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
   for (const auto& w : warnings)
     if (w.find(text) != std::string::npos) return true;
   return false;
-}
-
-void require_same(const viscoroll::LineSolverD::Solution& x,
-                  const viscoroll::LineSolverD::Solution& y) {
-  REQUIRE(x.converged == y.converged);
-  REQUIRE(x.iterations == y.iterations);
-  REQUIRE(same_bits(x.a(0.0), y.a(0.0)));
-  REQUIRE(same_bits(x.b(0.0), y.b(0.0)));
-  REQUIRE(same_bits(x.l(), y.l()));
-  REQUIRE(same_bits(x.d, y.d));
-  REQUIRE(same_bits(x.chi, y.chi));
 }
 
 }  // namespace
@@ -46,13 +35,13 @@ TEST_CASE("line solver: a seed that is not finite or not converged is set aside"
   auto nan_seed = cold;
   nan_seed.shape.alpha[1] = std::numeric_limits<double>::quiet_NaN();
   const auto from_nan = solver.solve(scene, &nan_seed);
-  require_same(from_nan, cold);
+  require_same_solution(from_nan, cold);
   REQUIRE(mentions(from_nan.warnings, "the seed was set aside"));
 
   auto failed_seed = cold;
   failed_seed.converged = false;
   const auto from_failed = solver.solve(scene, &failed_seed);
-  require_same(from_failed, cold);
+  require_same_solution(from_failed, cold);
   REQUIRE(mentions(from_failed.warnings, "the seed was set aside"));
 }
 
@@ -69,7 +58,7 @@ TEST_CASE("line solver: an iteration from a seed that stops short is run again c
   const auto cold = solver.solve(scene);
   const auto seeded = solver.solve(scene, &seed);
   REQUIRE(mentions(seeded.warnings, "solved again from the cold start"));
-  require_same(seeded, cold);
+  require_same_solution(seeded, cold);
 }
 
 TEST_CASE("line solver: a good seed is used, without a warning", "[line]") {

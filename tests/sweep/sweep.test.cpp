@@ -5,36 +5,25 @@
 // with the library's message; the options validate themselves.
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 #include <vector>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
 
 #include "support/paper_scene.hpp"
+#include "support/same_line_solution.hpp"
 
 namespace {
 
-using viscoroll::SweepOptions;
+using viscoroll::testing::require_same_solution;
+using viscoroll::testing::same_bits;
 
-/// Bitwise equality of two doubles (NaN equal to the same NaN).
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+using viscoroll::SweepOptions;
 
 std::vector<double> log_speeds(double lo, double hi, int n) {
   std::vector<double> v;
   for (int i = 0; i < n; ++i) v.push_back(lo * std::pow(hi / lo, double(i) / (n - 1)));
   return v;
-}
-
-void require_same(const viscoroll::LineSolverD::Solution& x,
-                  const viscoroll::LineSolverD::Solution& y) {
-  REQUIRE(x.converged == y.converged);
-  REQUIRE(x.iterations == y.iterations);
-  REQUIRE(same_bits(x.a(0.0), y.a(0.0)));
-  REQUIRE(same_bits(x.b(0.0), y.b(0.0)));
-  REQUIRE(same_bits(x.l(), y.l()));
-  REQUIRE(same_bits(x.d, y.d));
-  REQUIRE(same_bits(x.chi, y.chi));
 }
 
 }  // namespace
@@ -73,7 +62,7 @@ TEST_CASE("sweep: the line solver's chunked continuation, bit for bit for any th
     for (std::size_t i = 0; i < speeds.size(); ++i) {
       INFO("threads " << threads << ", speed " << speeds[i]);
       REQUIRE(got[i].converged);
-      require_same(got[i], expected[i]);
+      require_same_solution(got[i], expected[i]);
     }
   }
 }
@@ -101,15 +90,16 @@ TEST_CASE("sweep: an invalid speed is rethrown with the library's message", "[sw
   SweepOptions options;
   options.chunk = 1;
   options.threads = 2;
-  REQUIRE_THROWS_WITH(viscoroll::sweep(solver, viscoroll::PlaneScene<double>{1, 1, 0}, speeds,
-                                       options),
-                      Catch::Contains("speed = -3"));
+  REQUIRE_THROWS_WITH(
+      viscoroll::sweep(solver, viscoroll::PlaneScene<double>{1, 1, 0}, speeds, options),
+      Catch::Contains("speed = -3"));
 }
 
 TEST_CASE("sweep: options name the setting and its range", "[sweep]") {
   SweepOptions options;
   options.chunk = 0;
-  REQUIRE_THROWS_WITH(options.validate(), Catch::Contains("chunk") && Catch::Contains("1 <= chunk"));
+  REQUIRE_THROWS_WITH(options.validate(),
+                      Catch::Contains("chunk") && Catch::Contains("1 <= chunk"));
   options.chunk = 1;
   options.threads = 5000;
   REQUIRE_THROWS_WITH(options.validate(), Catch::Contains("threads"));
