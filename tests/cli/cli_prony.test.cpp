@@ -243,15 +243,6 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
           "[cli][prony]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   const TempDir dir("viscoroll_cli_prony_malformed");
-  const auto set = [](const char* pointer, json value) {
-    return [pointer, value](json& s) { s[json::json_pointer(pointer)] = value; };
-  };
-  const auto drop = [](const char* pointer) {
-    return [pointer](json& s) {
-      const json::json_pointer p(pointer);
-      s[p.parent_pointer()].erase(p.back());
-    };
-  };
   struct Case {
     std::string name;
     std::function<void(json&)> change;
@@ -259,22 +250,23 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
     std::vector<std::string> options = {};
   };
   const std::vector<Case> cases = {
-      {"terms_empty", set("/material/terms", json::array()), "material.terms is empty"},
-      {"terms_object", set("/material/terms", json::object()),
+      {"terms_empty", set_at("/material/terms", json::array()), "material.terms is empty"},
+      {"terms_object", set_at("/material/terms", json::object()),
        "material.terms must be an array of objects"},
-      {"g_negative", set("/material/terms/1/g", -1.0),
+      {"g_negative", set_at("/material/terms/1/g", -1.0),
        "material.terms[1].g = -1 is outside the valid range g >= 0"},
-      {"tau_zero", set("/material/terms/2/tau", 0.0),
+      {"tau_zero", set_at("/material/terms/2/tau", 0.0),
        "material.terms[2].tau = 0 is outside the valid range tau > 0"},
-      {"tau_negative", set("/material/terms/0/tau", -1e-3),
+      {"tau_negative", set_at("/material/terms/0/tau", -1e-3),
        "material.terms[0].tau = -0.001 is outside the valid range tau > 0"},
-      {"term_unknown_key", set("/material/terms/0/rho", 1.0), "unknown key material.terms[0].rho"},
-      {"g_inf_zero", set("/material/g_inf", 0.0),
+      {"term_unknown_key", set_at("/material/terms/0/rho", 1.0),
+       "unknown key material.terms[0].rho"},
+      {"g_inf_zero", set_at("/material/g_inf", 0.0),
        "material.g_inf = 0 is outside the valid range g_inf > 0"},
-      {"g_inf_missing", drop("/material/g_inf"), "missing key material.g_inf"},
-      {"nu_high", set("/material/nu", 0.6), "material.nu = 0.6 is outside the valid range"},
-      {"no_terms", drop("/material/terms"), "missing key material.terms (or material.dma"},
-      {"terms_and_dma", set("/material/dma", "x.csv"),
+      {"g_inf_missing", drop_at("/material/g_inf"), "missing key material.g_inf"},
+      {"nu_high", set_at("/material/nu", 0.6), "material.nu = 0.6 is outside the valid range"},
+      {"no_terms", drop_at("/material/terms"), "missing key material.terms (or material.dma"},
+      {"terms_and_dma", set_at("/material/dma", "x.csv"),
        "material.terms and material.dma are both given"},
       {"dma_missing_file",
        [](json& s) {
@@ -289,19 +281,19 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
          s["material"]["dma"] = "x.csv";
        },
        "unknown key material.g_inf with dma"},
-      {"unknown_law", set("/material/shift/law", "vft"),
+      {"unknown_law", set_at("/material/shift/law", "vft"),
        "material.shift.law = \"vft\" is not one of wlf, arrhenius"},
-      {"wlf_c2_zero", set("/material/shift/c2", 0.0),
+      {"wlf_c2_zero", set_at("/material/shift/c2", 0.0),
        "material.shift.c2 = 0 is outside the valid range c2 > 0"},
-      {"wlf_extra_key", set("/material/shift/activation_energy", 1.0),
+      {"wlf_extra_key", set_at("/material/shift/activation_energy", 1.0),
        "unknown key material.shift.activation_energy"},
       {"arrhenius_energy",
-       set("/material/shift",
-           json{{"law", "arrhenius"}, {"activation_energy", -1.0}, {"t_ref", 25.0}}),
+       set_at("/material/shift",
+              json{{"law", "arrhenius"}, {"activation_energy", -1.0}, {"t_ref", 25.0}}),
        "material.shift.activation_energy = -1 is outside the valid range activation_energy > 0"},
-      {"below_wlf_singularity", set("/temperature", json::array({25.0, -80.0})),
+      {"below_wlf_singularity", set_at("/temperature", json::array({25.0, -80.0})),
        "temperature[1] = -80 is outside the valid range temperature > t_ref - c2 = -76.6"},
-      {"at_wlf_singularity", set("/temperature", -76.6),
+      {"at_wlf_singularity", set_at("/temperature", -76.6),
        "temperature = -76.6 is outside the valid range temperature > t_ref - c2"},
       {"below_absolute_zero",
        [](json& s) {
@@ -310,8 +302,8 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
          s["temperature"] = -300.0;
        },
        "temperature = -300 is outside the valid range temperature > -273.15"},
-      {"temperature_string", set("/temperature", "warm"), "temperature must be a number"},
-      {"temperature_empty", set("/temperature", json::array()), "temperature is empty"},
+      {"temperature_string", set_at("/temperature", "warm"), "temperature must be a number"},
+      {"temperature_empty", set_at("/temperature", json::array()), "temperature is empty"},
       {"temperature_without_shift",
        [](json& s) {
          s["material"].erase("shift");
@@ -333,15 +325,15 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
        "--temperature: viscoroll: temperature = -90",
        {"--temperature", "-90"}},
       {"option_without_shift",
-       drop("/material/shift"),
+       drop_at("/material/shift"),
        "--temperature is valid only with a material of model prony with a shift law",
        {"--temperature", "20"}},
       {"option_with_sls",
-       set("/material", json{{"model", "standard_linear_solid"},
-                             {"mu_d", 3e6},
-                             {"nu", 0.5},
-                             {"f", 9},
-                             {"tau", 0.01}}),
+       set_at("/material", json{{"model", "standard_linear_solid"},
+                                {"mu_d", 3e6},
+                                {"nu", 0.5},
+                                {"f", 9},
+                                {"tau", 0.01}}),
        "--temperature is valid only with a material of model prony with a shift law",
        {"--temperature", "20"}},
       {"line",

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -102,6 +103,20 @@ inline std::string exact(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
+}
+
+/// A change of a scene's JSON for the malformed-scene tables: the value at the JSON pointer
+/// `pointer` (e.g. "/material/f") set to `value`.
+inline std::function<void(nlohmann::json&)> set_at(const char* pointer, nlohmann::json value) {
+  return [pointer, value](nlohmann::json& s) { s[nlohmann::json::json_pointer(pointer)] = value; };
+}
+
+/// A change of a scene's JSON: the key at the JSON pointer `pointer` removed.
+inline std::function<void(nlohmann::json&)> drop_at(const char* pointer) {
+  return [pointer](nlohmann::json& s) {
+    const nlohmann::json::json_pointer p(pointer);
+    s[p.parent_pointer()].erase(p.back());
+  };
 }
 
 }  // namespace viscoroll::cli_test
