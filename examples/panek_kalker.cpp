@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   std::ofstream sweep(args.dir / "panek_kalker_sweep.csv");
   sweep << "vtau,a0_ratio,b0_ratio,l_ratio,d_over_c1a0sq,chi,converged,iterations,seconds,residual,"
            "root\n";
-  sweep.precision(12);
+  sweep.precision(17);
   std::vector<double> speeds;
   std::vector<Solution> solutions;
   int failures = 0;
@@ -150,8 +150,8 @@ int main(int argc, char** argv) {
   std::ofstream pressure(args.dir / "panek_kalker_pressure.csv");
   zones << "vtau,y,x_lead,x_trail\n";
   pressure << "vtau,xi,p_over_pmax,x,p_a0sq_over_P\n";
-  zones.precision(12);
-  pressure.precision(12);
+  zones.precision(17);
+  pressure.precision(17);
   const double pi = std::acos(-1.0);
   for (double vtau : {0.01, 0.1, 0.3, 1.0, 3.0, 10.0, 100.0}) {
     std::optional<Solution> s;
