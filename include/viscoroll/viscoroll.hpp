@@ -8,7 +8,7 @@
 
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/errors.hpp>
-#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/line/line_solver.hpp>

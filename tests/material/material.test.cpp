@@ -33,3 +33,24 @@ TEMPLATE_TEST_CASE("material parameters are validated", "[material][validation]"
                     Catch::Contains("nu") && Catch::Contains("0.7") && Catch::Contains("-1 < nu <= 0.5"));
   CHECK_NOTHROW(StandardLinearSolid<T>(T(1), T(0.5), T(0), T(0)));
 }
+
+TEMPLATE_TEST_CASE("the spectrum each single-time material gives the solvers", "[material]", float,
+                   double, long double) {
+  using T = TestType;
+  // Eq. (1): the standard linear solid is the one term (f, tau); an elastic solid has none.
+  const StandardLinearSolid<T> sls(T(2), T(0.25), T(9), T(0.5));
+  STATIC_REQUIRE(StandardLinearSolid<T>::memory_term_count == 1);
+  STATIC_REQUIRE(Elastic<T>::memory_term_count == 0);
+  REQUIRE(sls.memory_terms().size() == 1);
+  CHECK(sls.memory_terms()[0].f == T(9));
+  CHECK(sls.memory_terms()[0].tau == T(0.5));
+  CHECK(sls.creep_ratio() == sls.memory_terms()[0].f);
+  CHECK(Elastic<T>(T(1), T(0.3)).memory_terms().size() == 0);
+  // What the plane and line solvers read: the term itself, or (0, 0) without one.
+  const auto one = viscoroll::detail::single_memory_term(sls);
+  CHECK(one.f == T(9));
+  CHECK(one.tau == T(0.5));
+  const auto none = viscoroll::detail::single_memory_term(Elastic<T>(T(1), T(0.3)));
+  CHECK(none.f == T(0));
+  CHECK(none.tau == T(0));
+}

@@ -17,7 +17,12 @@ using viscoroll::RelaxationTerm;
 static_assert(viscoroll::PronySeriesModel<PronyCreep<double>>);
 static_assert(viscoroll::PronySeriesModel<PronyRelaxation<float>>);
 static_assert(viscoroll::PronySeriesModel<viscoroll::GeneralizedMaxwell<long double>>);
-static_assert(!viscoroll::ConstitutiveModel<PronyRelaxation<double>>);
+// Every material is a ConstitutiveModel; a spectrum is not a SingleTimeModel (the plane and line
+// solvers reject it at compile time), while the standard linear solid is one.
+static_assert(viscoroll::ConstitutiveModel<PronyRelaxation<double>>);
+static_assert(!viscoroll::SingleTimeModel<PronyRelaxation<double>>);
+static_assert(!viscoroll::SingleTimeModel<PronyCreep<float>>);
+static_assert(!viscoroll::PronySeriesModel<viscoroll::StandardLinearSolid<double>>);
 
 namespace {
 

@@ -5,7 +5,8 @@
 //   a(y) = a_ref sqrt(1 - t^2) exp(sum_{k<N} alpha_k T_k(u)),   b(y) = a_ref sum_{k<=N} beta_k T_k(u),
 // T_k the Chebyshev polynomials. a(+-l) = 0 holds by construction, with the square-root end of
 // the static solution (48) (alpha = beta = 0 is Kalker's static contact), and a > 0 inside for
-// any coefficients. G (36), F0 (33) and Q (46) follow pointwise (docs/theory.md section 4).
+// any coefficients. G (36), F0 (33) and Q (46) follow pointwise from the strip at each y
+// (core/strip.hpp, strip_functions; docs/theory.md section 4).
 #pragma once
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
@@ -148,32 +150,5 @@ struct LineShape {
   /// b(y) for |y| <= l.
   Real b(Real y) const { return b_at(one_minus_t2(y)); }
 };
-
-/// The strip functions at one y: G of Eq. (36), F0 of Eq. (33), Q of Eq. (46).
-template <RealScalar Real>
-struct StripFunctions {
-  Real a, b, g, f0, q;
-};
-
-/// G, F0 and Q for half width a > 0, offset b, V tau > 0 and creep ratio f, curvature c1, given
-/// r_i = I1(alpha)/I0(alpha), alpha = (1 + f) a / V tau (for callers that need r_i as well):
-///   G = {(V tau - b) a - a^2/alpha} I1(alpha)/I0(alpha)                               (36), (37)
-///   F0 = C1 (a^2/4 + G/2)                                                            (33)
-///   Q = (C1/2) G (1 - b / V tau)                                                      (46)
-/// with (V tau - b) a - a^2/alpha = a (V tau f/(1 + f) - b).
-template <RealScalar Real>
-StripFunctions<Real> strip_functions_from_ratio(Real c1, Real a, Real b, Real vtau, Real f,
-                                                Real r_i) {
-  const Real g = a * (vtau * f / (1 + f) - b) * r_i;                             // Eq. (36)
-  return {a, b, g, c1 * (a * a / 4 + g / 2), c1 * g * (vtau - b) / (2 * vtau)};  // (33), (46)
-}
-
-/// G, F0 and Q (strip_functions_from_ratio) for any a: zero beyond the ends (a <= 0).
-template <RealScalar Real>
-StripFunctions<Real> strip_functions(Real c1, Real a, Real b, Real vtau, Real f) {
-  if (!(a > 0)) return {Real(0), b, Real(0), Real(0), Real(0)};
-  const Real alpha = (1 + f) * a / vtau;  // Eq. (37)
-  return strip_functions_from_ratio(c1, a, b, vtau, f, special::bessel_i1_over_i0_fast(alpha));
-}
 
 }  // namespace viscoroll

@@ -23,7 +23,7 @@
 #include <vector>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <viscoroll/core/concepts.hpp>
-#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
@@ -174,7 +174,7 @@ std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
 
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
 /// quadrature rule (applied on the graded panels of every line integral).
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 12>>
+template <RealScalar Real, SingleTimeModel Material, class Quadrature = GaussLegendre<Real, 12>>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 class LineSolver {
  public:
@@ -717,7 +717,7 @@ class LineSolver {
   LineOptions options_;
 };
 
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+template <RealScalar Real, SingleTimeModel Material, class Quadrature>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
                                                    const Solution* start) const -> Solution {
@@ -740,6 +740,12 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
   }
   return closed_form(scene, slow, slow, c, f, "static (closed form)");
 }
+
+/// The scalar deduced from the material: LineSolver solver(StandardLinearSolid<double>(...)).
+template <SingleTimeModel Material>
+LineSolver(Material) -> LineSolver<typename Material::real_type, Material>;
+template <SingleTimeModel Material>
+LineSolver(Material, LineOptions) -> LineSolver<typename Material::real_type, Material>;
 
 /// The common case: double precision, standard linear solid, 12-point Gauss-Legendre panels.
 using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;

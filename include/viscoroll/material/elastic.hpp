@@ -2,6 +2,7 @@
 // Panek & Kalker (1980) compiles away (f = 0 in Eq. 1).
 #pragma once
 
+#include <array>
 #include <boost/math/constants/constants.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -14,6 +15,7 @@ class Elastic {
  public:
   using real_type = Real;
   static constexpr bool is_viscoelastic = false;
+  static constexpr int memory_term_count = 0;
 
   /// Throws std::invalid_argument unless mu > 0 and -1 < nu <= 0.5, both finite.
   Elastic(Real mu, Real nu) : mu_(mu), nu_(nu) {
@@ -25,6 +27,8 @@ class Elastic {
   Real nu() const { return nu_; }
   Real creep_ratio() const { return Real(0); }
   Real relaxation_time() const { return Real(0); }
+  /// No memory: the empty spectrum.
+  std::array<PronyTerm<Real>, 0> memory_terms() const { return {}; }
 
   /// (1 - nu) / (2 pi mu): the factor of the Boussinesq equation (3).
   Real instantaneous_compliance() const {

@@ -8,7 +8,8 @@
 // One creep term (f, tau) is the standard linear solid of Eq. (1); its relaxation form is
 // G_inf = mu_D / (1 + f), g = mu_D f / (1 + f), rho = tau / (1 + f) (R6a).
 // Poisson's ratio nu is constant. The solvers use the creep form (the memory terms of Hunter's
-// superposition, docs/bem.md (B9), (B10)): both classes model PronySeriesModel.
+// superposition, docs/bem.md (B9), (B10)): both classes model ConstitutiveModel with a run-time
+// spectrum (PronySeriesModel).
 #pragma once
 
 #include <boost/math/constants/constants.hpp>
@@ -26,13 +27,6 @@
 
 namespace viscoroll {
 
-/// One term of the creep form: creep ratio f_k and retardation time tau_k ((R2), docs/bem.md B9).
-template <RealScalar Real>
-struct PronyTerm {
-  Real f;
-  Real tau;
-};
-
 /// One term of the relaxation form (R1): modulus g_i (Pa) and relaxation time rho_i (s).
 template <RealScalar Real>
 struct RelaxationTerm {
@@ -40,19 +34,9 @@ struct RelaxationTerm {
   Real rho;
 };
 
-/// A material whose creep function is a Prony series: it provides
-///   - `typename M::real_type`, a RealScalar; `static constexpr bool is_viscoelastic`;
-///   - `real_type instantaneous_compliance() const`: (1 - nu) / (2 pi mu_D);
-///   - `real_type creep_ratio() const`: sum_k f_k (the long-term compliance is 1 + that times the
-///     instantaneous one);
-///   - `memory_terms() const`: a range of PronyTerm<real_type>.
+/// A ConstitutiveModel whose spectrum is a run-time list of terms (PronyCreep, PronyRelaxation).
 template <class M>
-concept PronySeriesModel = RealScalar<typename M::real_type> && requires(const M& m) {
-  { M::is_viscoelastic } -> std::convertible_to<bool>;
-  { m.instantaneous_compliance() } -> std::same_as<typename M::real_type>;
-  { m.creep_ratio() } -> std::same_as<typename M::real_type>;
-  { m.memory_terms()[0] } -> std::convertible_to<PronyTerm<typename M::real_type>>;
-};
+concept PronySeriesModel = ConstitutiveModel<M> && M::memory_term_count == dynamic_memory_terms;
 
 namespace detail {
 template <class Real>
@@ -81,6 +65,7 @@ class PronyCreep {
  public:
   using real_type = Real;
   static constexpr bool is_viscoelastic = true;
+  static constexpr int memory_term_count = dynamic_memory_terms;
 
   /// Throws std::invalid_argument unless mu_d > 0, -1 < nu <= 0.5, every f_k >= 0 and
   /// tau_k >= 0, all finite (the parameter is named with its index, "f[2]").
@@ -136,13 +121,14 @@ class PronyCreep {
 };
 
 /// The relaxation form (R1): long-term shear modulus g_inf = G_inf > 0 (a solid: rolling needs
-/// it), Poisson's ratio nu, terms (g_i >= 0, rho_i > 0). It models PronySeriesModel through its
+/// it), Poisson's ratio nu, terms (g_i >= 0, rho_i > 0). It models ConstitutiveModel through its
 /// creep form, computed on construction ((R4), (R5)): memory_terms() are the retardation terms.
 template <RealScalar Real>
 class PronyRelaxation {
  public:
   using real_type = Real;
   static constexpr bool is_viscoelastic = true;
+  static constexpr int memory_term_count = dynamic_memory_terms;
 
   /// Throws std::invalid_argument unless g_inf > 0, -1 < nu <= 0.5, every g_i >= 0 and
   /// rho_i > 0, all finite (named with the index, "g[3]", "rho[0]").
@@ -200,7 +186,7 @@ class PronyRelaxation {
   /// the residues; terms with g_i = 0 dropped, equal rho_i merged; sorted by time.
   PronyCreep<Real> to_creep() const { return PronyCreep<Real>(glassy_, nu_, creep_terms_); }
 
-  // PronySeriesModel, through the creep form.
+  // ConstitutiveModel, through the creep form.
   const std::vector<PronyTerm<Real>>& memory_terms() const { return creep_terms_; }
   Real creep_ratio() const { return detail::sum_creep_ratios(creep_terms_); }
   Real instantaneous_compliance() const {

@@ -6,6 +6,7 @@
 // the long-term (rubbery) modulus is mu_D / (1 + f). Poisson's ratio nu is constant.
 #pragma once
 
+#include <array>
 #include <boost/math/constants/constants.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -18,6 +19,7 @@ class StandardLinearSolid {
  public:
   using real_type = Real;
   static constexpr bool is_viscoelastic = true;
+  static constexpr int memory_term_count = 1;
 
   /// Throws std::invalid_argument unless mu_d > 0, -1 < nu <= 0.5, f >= 0, tau >= 0, all finite.
   StandardLinearSolid(Real mu_d, Real nu, Real f, Real tau) : mu_d_(mu_d), nu_(nu), f_(f), tau_(tau) {
@@ -31,6 +33,8 @@ class StandardLinearSolid {
   Real nu() const { return nu_; }
   Real creep_ratio() const { return f_; }
   Real relaxation_time() const { return tau_; }
+  /// The spectrum of Eq. (1): the one term (f, tau).
+  std::array<PronyTerm<Real>, 1> memory_terms() const { return {PronyTerm<Real>{f_, tau_}}; }
 
   /// (1 - nu) / (2 pi mu_D): the factor of Eqs. (3) and (7).
   Real instantaneous_compliance() const {

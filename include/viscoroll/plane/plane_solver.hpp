@@ -1,4 +1,5 @@
 // viscoroll: the plane problem, a rigid cylinder rolling on a standard-linear-solid half space.
+// The strip it solves for is core/strip.hpp's; this header finds its half width.
 //
 // Hunter (1961), J. Appl. Mech. 28, 611-617; in the notation of Panek & Kalker (1980), to whose
 // equations the plane problem reduces when nothing varies along y. The contact [b - a, b + a]
@@ -18,7 +19,7 @@
 #include <cstdint>
 #include <limits>
 #include <viscoroll/core/concepts.hpp>
-#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
@@ -76,9 +77,10 @@ struct PlaneSolution {
   PressurePeak<Real> peak() const { return strip.peak(); }
 };
 
-/// Solver of the plane problem over a scalar, a constitutive model and a quadrature rule (the
-/// rule serves the pressure reconstruction (35); a, b, G and chi are closed-form given a).
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 24>>
+/// Solver of the plane problem over a scalar, a constitutive model with at most one memory term
+/// (SingleTimeModel: Elastic, StandardLinearSolid) and a quadrature rule (the rule serves the
+/// pressure reconstruction (35); a, b, G and chi are closed-form given a).
+template <RealScalar Real, SingleTimeModel Material, class Quadrature = GaussLegendre<Real, 24>>
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 class PlaneSolver {
  public:
@@ -104,7 +106,7 @@ class PlaneSolver {
     // (P5): h(A) = A^2 + 2 f/(1+f) v A R(A) - 1, increasing from h < 0 at the glassy width
     // A = (1+f)^(-1/2) to h > 0 at the long-term width A = 1.
     auto h = [&](Real A) {
-      const Real r_i = bessel_i1_over_i0((1 + f) * A / v);
+      const Real r_i = bessel_i1_over_i0(strip_alpha(A, v, f));
       const Real r_k = bessel_k1_over_k0(A / v);
       return A * A + 2 * creep * v * A * (r_i * r_k / (r_i + r_k)) - 1;
     };
@@ -132,29 +134,30 @@ class PlaneSolver {
     using std::abs;
     const Real residual = abs(h(A));
     const Real a = A * a0;
-    const Real alpha = (1 + f) * a / vtau;  // Eq. (37)
+    const Real alpha = strip_alpha(a, vtau, f);
     const Real r_i = bessel_i1_over_i0(alpha);
     const Real r_k = bessel_k1_over_k0(a / vtau);
-    // (P4): b from (36) = leading-edge condition; then G = a b K1/K0.
+    // (P4): b from (36) = leading-edge condition (G = a b K1/K0); then G (36) and Q (46) of the
+    // strip, and F0 = C1 a0^2 / 4 from the load, Eq. (33) with (52).
     const Real b = vtau * creep * r_i / (r_i + r_k);
-    const Real g = a * b * r_k;
-    const Real f0 = scene.c1 * a0 * a0 / 4;            // Eq. (33) with (52)
-    const Real q = (1 - b / vtau) * scene.c1 * g / 2;  // Eq. (46)
+    const auto sf = strip_functions_from_ratio(scene.c1, a, b, vtau, f, r_i);
+    const Real g = sf.g, q = sf.q;
+    const Real f0 = scene.c1 * a0 * a0 / 4;
     // (P7): chi = C1 xbar, xbar = [2 b G + V tau (f a^2 I2/I0 + 2 a b r_I) / (1+f)] / a0^2,
     // every term non-negative (the paper's (54) cancels as V tau grows).
     const Real delta = bessel_i2_over_i0(alpha);
     const Real xbar = strip_first_moment(a, b, g, vtau, f, r_i, delta) / (a0 * a0);
-    return Solution{a,
-                    b,
-                    g,
-                    a0,
-                    f0,
-                    q,
-                    scene.c1 * xbar,
-                    converged,
-                    iterations,
-                    residual,
-                    StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
+    return Solution{.a = a,
+                    .b = b,
+                    .g = g,
+                    .a_long_term = a0,
+                    .f0 = f0,
+                    .q = q,
+                    .chi = scene.c1 * xbar,
+                    .converged = converged,
+                    .iterations = iterations,
+                    .residual = residual,
+                    .strip = StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
   }
 
   /// Hertz's strip of half width a under the compliance (1 + f) c: b = G = Q = chi = 0,
@@ -162,8 +165,17 @@ class PlaneSolver {
   /// (the instantaneous compliance alone), as LineSolver reports its glassy closed form.
   static Solution static_solution(const PlaneScene<Real>& scene, Real a, Real a0, Real c, Real f) {
     const StripPressure<Real, Quadrature> strip(scene.c1, a, Real(0), Real(0), Real(0), f, c);
-    return Solution{a,    Real(0), Real(0), a0,   scene.c1 * a * a / 4, Real(0), Real(0),
-                    true, 0,       Real(0), strip};
+    return Solution{.a = a,
+                    .b = Real(0),
+                    .g = Real(0),
+                    .a_long_term = a0,
+                    .f0 = scene.c1 * a * a / 4,
+                    .q = Real(0),
+                    .chi = Real(0),
+                    .converged = true,
+                    .iterations = 0,
+                    .residual = Real(0),
+                    .strip = strip};
   }
 
   /// The glassy closed form is within eps of the rolling solution (strip_is_glassy, (P6)).
@@ -173,15 +185,17 @@ class PlaneSolver {
   PlaneOptions options_;
 };
 
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+template <RealScalar Real, SingleTimeModel Material, class Quadrature>
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scene) const
     -> Solution {
   using std::sqrt;
   scene.validate();
+  // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic).
   const Real c = material_.instantaneous_compliance();
-  const Real f = material_.creep_ratio();
-  const Real vtau = scene.speed * material_.relaxation_time();
+  const PronyTerm<Real> memory = detail::single_memory_term(material_);
+  const Real f = memory.f;
+  const Real vtau = scene.speed * memory.tau;
   // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
   const Real a0 = sqrt(4 * c * (1 + f) * scene.load / scene.c1);
   if constexpr (Material::is_viscoelastic) {
@@ -196,6 +210,12 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
   // with the long-term compliance, no Bessel work.
   return static_solution(scene, a0, a0, c, f);
 }
+
+/// The scalar deduced from the material: PlaneSolver solver(StandardLinearSolid<double>(...)).
+template <SingleTimeModel Material>
+PlaneSolver(Material) -> PlaneSolver<typename Material::real_type, Material>;
+template <SingleTimeModel Material>
+PlaneSolver(Material, PlaneOptions) -> PlaneSolver<typename Material::real_type, Material>;
 
 /// The common case: double precision, standard linear solid, 24-point Gauss-Legendre panels.
 using PlaneSolverD = PlaneSolver<double, StandardLinearSolid<double>>;

@@ -1,16 +1,22 @@
-// viscoroll: the pressure across one strip of a rolling contact, from the pseudo-pressure.
+// viscoroll: the 2-D strip solution, shared by the plane and the line solver.
 //
-// Panek & Kalker (1980), Eqs. (7), (32), (35). A strip is the chord of the contact at one y (or
-// the whole contact of the plane problem): x in [b - a, b + a], with xi = x - b (Eq. 30). Given
-// the half width a, offset b and G of Eq. (33), the pseudo-pressure is (Eq. 32)
+// Panek & Kalker (1980), Sections 5-6. A strip is the chord of the contact at one y (or the whole
+// contact of the plane problem): x in [b - a, b + a], with xi = x - b (Eq. 30), rolling at V with
+// one memory term (creep ratio f, relaxation time tau). Given its half width a and offset b:
+//   alpha = (1 + f) a / V tau                                                         Eq. (37)
+//   G = a (V tau f/(1 + f) - b) I1(alpha)/I0(alpha)    (trailing-edge condition)      Eq. (36)
+//   F0 = C1 (a^2/4 + G/2) = int p* dx                                                 Eq. (33)
+//   Q = (C1/2) G (1 - b/V tau)                                                        Eq. (46)
+// (strip_functions); the pseudo-pressure across it (Eq. 32)
 //   p*(xi) = C1 / (2 pi) [sqrt(a^2 - xi^2) + ((V tau - b) xi + G) / sqrt(a^2 - xi^2)]
-// and the pressure solves the first-order equation (7), c [(1 + f) p - V tau p'] = p*, with
+// and the pressure that solves the first-order equation (7), c [(1 + f) p - V tau p'] = p*, with
 // p = 0 at the leading edge (Eq. 35):
-//   c p(x) = 1/(V tau) int_x^{b+a} p*(x') exp(-k (x' - x)) dx',   k = (1 + f) / (V tau).
-// When G satisfies the trailing-edge condition (36) the same integral taken from the trailing
-// edge (docs/theory.md, "Stable evaluation of Eq. (35)") is equal to it; each form is used where
-// it neither overflows nor cancels. Only exponentials of non-positive arguments (or at most +1)
-// are formed, so nothing overflows for any V tau.
+//   c p(x) = 1/(V tau) int_x^{b+a} p*(x') exp(-k (x' - x)) dx',   k = (1 + f) / (V tau)
+// (StripPressure). When G satisfies (36) the same integral taken from the trailing edge
+// (docs/theory.md, "Stable evaluation of Eq. (35)") is equal to it; each form is used where it
+// neither overflows nor cancels. Only exponentials of non-positive arguments (or at most +1) are
+// formed, so nothing overflows for any V tau. The strip's first moment behind the rolling
+// friction (54) is strip_first_moment, in the cancellation-free form (P7).
 #pragma once
 
 #include <algorithm>
@@ -22,8 +28,43 @@
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
+
+/// alpha = (1 + f) a / V tau of Eq. (37): the strip's half width over the length V tau/(1 + f)
+/// on which the pressure of Eq. (35) relaxes.
+template <RealScalar Real>
+Real strip_alpha(Real a, Real vtau, Real f) {
+  return (1 + f) * a / vtau;  // Eq. (37)
+}
+
+/// The strip functions at one y: G of Eq. (36), F0 of Eq. (33), Q of Eq. (46).
+template <RealScalar Real>
+struct StripFunctions {
+  Real a, b, g, f0, q;
+};
+
+/// G, F0 and Q for half width a > 0, offset b, V tau > 0 and creep ratio f, curvature c1, given
+/// r_i = I1(alpha)/I0(alpha), alpha = (1 + f) a / V tau (for callers that need r_i as well):
+///   G = {(V tau - b) a - a^2/alpha} I1(alpha)/I0(alpha)                               (36), (37)
+///   F0 = C1 (a^2/4 + G/2)                                                            (33)
+///   Q = (C1/2) G (1 - b / V tau)                                                      (46)
+/// with (V tau - b) a - a^2/alpha = a (V tau f/(1 + f) - b).
+template <RealScalar Real>
+StripFunctions<Real> strip_functions_from_ratio(Real c1, Real a, Real b, Real vtau, Real f,
+                                                Real r_i) {
+  const Real g = a * (vtau * f / (1 + f) - b) * r_i;                             // Eq. (36)
+  return {a, b, g, c1 * (a * a / 4 + g / 2), c1 * g * (vtau - b) / (2 * vtau)};  // (33), (46)
+}
+
+/// G, F0 and Q (strip_functions_from_ratio) for any a: zero beyond the ends (a <= 0).
+template <RealScalar Real>
+StripFunctions<Real> strip_functions(Real c1, Real a, Real b, Real vtau, Real f) {
+  if (!(a > 0)) return {Real(0), b, Real(0), Real(0), Real(0)};
+  return strip_functions_from_ratio(c1, a, b, vtau, f,
+                                    special::bessel_i1_over_i0_fast(strip_alpha(a, vtau, f)));
+}
 
 /// The first moment of a strip's pressure in the cancellation-free form (P7) of docs/theory.md:
 ///   4 c (1 + f) int x p dx / C1 = 2 b G + V tau (f a^2 I2/I0 + 2 a b I1/I0) / (1 + f),
@@ -92,7 +133,7 @@ class StripPressure {
     const Real ahead = leading_edge() - x, behind = x - trailing_edge();
     if (!(ahead > 0 && behind > 0)) return Real(0);
     if (vtau_ == 0) return pseudo_pressure(x) / (c_ * (1 + f_));  // Eq. (7) with V tau = 0
-    const Real alpha = (1 + f_) * a_ / vtau_;                     // Eq. (37)
+    const Real alpha = strip_alpha(a_, vtau_, f_);
     const Real prefactor = c1_ / (2 * pi() * c_ * vtau_);
     const Real one_minus_s = ahead / a_, one_plus_s = behind / a_;
     if (one_plus_s < 1 && alpha * one_plus_s <= 1)

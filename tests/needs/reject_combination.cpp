@@ -1,0 +1,21 @@
+// A combination of policies that cannot work must fail to compile with the name of the concept it
+// breaks (tests/CMakeLists.txt compiles this file once per case and looks for that name in the
+// compiler's message). Not part of any executable.
+#include <viscoroll/material/generalized_maxwell.hpp>
+#include <viscoroll/quadrature/adaptive.hpp>
+#include <viscoroll/viscoroll.hpp>
+
+#if VISCOROLL_REJECT_CASE == 1
+// Several retardation times in the single-time line theory: SingleTimeModel.
+viscoroll::LineSolver<double, viscoroll::GeneralizedMaxwell<double>> solver(
+    viscoroll::GeneralizedMaxwell<double>(1.0, 0.5, {{1.0, 1.0}, {2.0, 10.0}}));
+#elif VISCOROLL_REJECT_CASE == 2
+// An adaptive rule where the line solver evaluates its kernels on fixed nodes: NodalQuadratureRule.
+viscoroll::LineSolver<double, viscoroll::StandardLinearSolid<double>,
+                      viscoroll::AdaptiveGaussKronrod<double>>
+    solver(viscoroll::StandardLinearSolid<double>(1.0, 0.5, 9.0, 1.0));
+#elif VISCOROLL_REJECT_CASE == 3
+// A spectrum in the plane solver's closed forms: SingleTimeModel.
+viscoroll::PlaneSolver<double, viscoroll::PronyRelaxation<double>> solver(
+    viscoroll::PronyRelaxation<double>(1.0, 0.5, {{1.0, 1.0}}));
+#endif
