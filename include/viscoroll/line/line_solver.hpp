@@ -4,16 +4,17 @@
 // Panek & Kalker (1980), Sections 5-7: the equations (33), (34), (36), (46), (47) and a
 // leading-edge condition (line_residual.hpp; docs/theory.md section 4 for the form (L6) used by
 // default and why the printed (44) is not), solved for the coefficients of a(y), b(y)
-// (line_shape.hpp), l and d by a Levenberg-Marquardt iteration (a damped Gauss-Newton method with
-// Marquardt's diagonal scaling; the system is square, so a converged solution has a zero residual
-// to rounding). The static scene (V tau = 0), the elastic material (f = 0) and the glassy limit
-// (V tau beyond ~40/eps half widths, strip_is_glassy) are Kalker's closed form
-// (static_line_contact.hpp) with the long-term or the instantaneous compliance: no Bessel work.
+// (line_shape.hpp), l and d by a Levenberg-Marquardt iteration (numerics/levenberg_marquardt.hpp;
+// the system is square, so a converged solution has a zero residual to rounding), or, where the
+// equations have no root, as the certified least-squares minimum of the paper's Section 7
+// (numerics/least_squares_minimum.hpp). The static scene (V tau = 0), the elastic material
+// (f = 0) and the glassy limit (V tau beyond ~40/eps half widths, strip_is_glassy) are Kalker's
+// closed form (static_line_contact.hpp) with the long-term or the instantaneous compliance: no
+// Bessel work.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
+#include <boost/math/special_functions/fpclassify.hpp>
 #include <chrono>
 #include <cmath>
 #include <concepts>
@@ -21,14 +22,16 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include <boost/math/special_functions/fpclassify.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
+#include <viscoroll/line/line_solution.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
+#include <viscoroll/numerics/least_squares_minimum.hpp>
+#include <viscoroll/numerics/levenberg_marquardt.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
@@ -97,81 +100,6 @@ struct LineOptions {
   }
 };
 
-/// The line-contact solution: the contact zone, the penetration, the line functions of Section 5
-/// and the rolling friction of Section 6.
-template <RealScalar Real, class Quadrature>
-struct LineSolution {
-  LineShape<Real> shape;  ///< a(y), b(y), l
-  Real d;                 ///< penetration (Eq. 27)
-  Real a_long_term;       ///< a0: half width at y = 0 of the static (V tau = 0) contact
-  Real l_long_term;       ///< l0: its half length
-  Real d_long_term;       ///< its penetration
-  Real chi;               ///< rolling-friction coefficient, Eq. (54) in the form of section 4
-  bool converged;         ///< the iteration met its tolerance (always true for a closed form)
-  /// The residual vanishes (max |r| <= 64 sqrt(eps)): a root of the line equations. False with
-  /// converged at a certified least-squares minimum where the equations have no root (the
-  /// residual is then reported, and a warning says so).
-  bool root;
-  std::string reason;                 ///< why it stopped
-  int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
-  Real residual;                      ///< max |r| of the scaled equations at the returned solution
-  std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
-
-  Real c1, vtau, f, compliance;
-
-  Real l() const { return shape.l; }
-  Real a(Real y) const { return shape.a(y); }
-  Real b(Real y) const { return shape.b(y); }
-  /// G(y) of Eq. (36); 0 for a static or elastic scene.
-  Real g(Real y) const { return functions(y).g; }
-  /// F0(y) of Eq. (33).
-  Real f0(Real y) const { return functions(y).f0; }
-  /// Q(y) of Eq. (46).
-  Real q(Real y) const { return functions(y).q; }
-
-  /// The strip at y (|y| < l): Eqs. (32), (35) across the contact.
-  StripPressure<Real, Quadrature> strip(Real y) const {
-    const auto s = functions(y);
-    return StripPressure<Real, Quadrature>(c1, s.a, s.b, s.g, vtau, f, compliance);
-  }
-  /// p(x, y), Eq. (35); zero outside the contact.
-  Real pressure(Real x, Real y) const {
-    using std::abs;
-    if (!(abs(y) < shape.l)) return Real(0);
-    return strip(y).pressure(x);
-  }
-
-  StripFunctions<Real> functions(Real y) const {
-    const Real a = shape.a(y), b = shape.b(y);
-    if (!(vtau > 0) || !(f > 0) || !(a > 0)) return {a, b, Real(0), c1 * a * a / 4, Real(0)};
-    return strip_functions(c1, a, b, vtau, f);
-  }
-};
-
-/// The line theory's domain (Section 3: the contact is slender, a(y) << l): a warning when
-/// l/a(0) < 3, and one when a(y) somewhere reaches l/3 (a(y) can exceed a(0), as at the dip of
-/// a(0) near V tau = 5 a0). a(y) is sampled at 65 points y = l k/64, k = 0..64. Empty inside it.
-template <RealScalar Real>
-std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
-  std::vector<std::string> warnings;
-  const Real l = shape.l, a0 = shape.a(Real(0));
-  const Real aspect = l / a0;
-  if (!(aspect >= 3))
-    warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
-                       " < 3: outside the line-contact theory's domain of validity");
-  Real a_max = a0, y_max = 0;
-  for (int k = 1; k <= 64; ++k) {
-    const Real y = l * Real(k) / 64, a = shape.a(y);
-    if (a > a_max) a_max = a, y_max = y;
-  }
-  if (a_max > a0 && !(l >= 3 * a_max))
-    warnings.push_back("a(y) = " + std::to_string(double(a_max)) +
-                       " at y = " + std::to_string(double(y_max)) +
-                       " is not small against l = " + std::to_string(double(l)) +
-                       " (l/max a(y) < 3): outside the line-contact theory's domain of validity");
-  return warnings;
-}
-
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
 /// quadrature rule (applied on the graded panels of every line integral).
 template <RealScalar Real, SingleTimeModel Material, class Quadrature = GaussLegendre<Real, 12>>
@@ -239,22 +167,8 @@ class LineSolver {
   }
 
   /// max |r| of the scaled equations below which the iterate is a root (`LineSolution::root`):
-  /// the tolerance of iterate()'s stop, minimise()'s hand-back and the solution's flag.
-  static Real root_tolerance() {
-    using std::sqrt;
-    return 64 * sqrt(std::numeric_limits<Real>::epsilon());
-  }
-
-  /// The outcome of one Levenberg-Marquardt run.
-  struct Outcome {
-    bool converged = false;
-    bool undefined = false;  ///< the Jacobian could not be evaluated (left the equations' domain)
-    bool minimum = false;    ///< stopped at a least-squares minimum with no root near (or no
-                             ///< descent step): where `minimise` takes over
-    bool root_near = false;  ///< `minimise` reached a residual below tolerance
-    std::string reason = "iteration limit";
-    int iterations = 0;
-  };
+  /// 64 sqrt(eps), the minimisers' stop at a root and the solution's flag.
+  static Real root_tolerance() { return numerics::default_root_tolerance<Real>(); }
 
   /// rolling() from `start` where it can seed the iteration, else from the cold start; a seeded
   /// iteration that stops short is run again from the cold start. The result's warnings say when
@@ -284,8 +198,8 @@ class LineSolver {
         if (!(boost::math::isfinite)(x)) return false;
       return true;
     };
-    return s.converged && !s.shape.alpha.empty() && finite(s.shape.alpha) &&
-           finite(s.shape.beta) && (boost::math::isfinite)(s.shape.l) && s.shape.l > 0 &&
+    return s.converged && !s.shape.alpha.empty() && finite(s.shape.alpha) && finite(s.shape.beta) &&
+           (boost::math::isfinite)(s.shape.l) && s.shape.l > 0 &&
            (boost::math::isfinite)(s.shape.a_ref) && s.shape.a_ref > 0 &&
            (boost::math::isfinite)(s.d);
   }
@@ -316,7 +230,17 @@ class LineSolver {
       d = slow.d * ratio * ratio;
       stages = continuation_stages(options_.terms);
     }
-    Outcome total;
+    // The paper's least-squares solution where the equations have no root (the last stage, with
+    // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
+    // Levenberg-Marquardt certifies it.
+    const bool least_squares = options_.least_squares &&
+                               options_.jacobian == LineJacobian::analytic &&
+                               options_.leading_edge == LeadingEdgeForm::exterior;
+    const numerics::LeastSquaresOptions<Real> settings{
+        .max_iterations = options_.max_iterations,
+        .root_tolerance = root_tolerance(),
+        .analytic_jacobian = options_.jacobian == LineJacobian::analytic};
+    int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
       const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge,
                                                options_.basis, options_.oversampling);
@@ -326,339 +250,33 @@ class LineSolver {
         if (k == 0) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
         if (!res(x, r))
           return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain",
-                         total.iterations);
+                         iterations);
       }
-      Outcome out = iterate(res, x, r);
-      total.iterations += out.iterations;
+      numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
+      iterations += out.iterations;
       const bool last = k + 1 == stages.size();
-      if (last && out.minimum && options_.least_squares &&
-          options_.jacobian == LineJacobian::analytic &&
-          options_.leading_edge == LeadingEdgeForm::exterior) {
-        // The paper's least-squares solution where the equations have no root; if Newton's
-        // method on |r|^2 finds a root after all, Levenberg-Marquardt certifies it.
-        out = minimise(res, x, r);
-        total.iterations += out.iterations;
+      if (last && out.minimum && least_squares) {
+        out = numerics::least_squares_minimum(res, x, r, settings);
+        iterations += out.iterations;
+        if (out.converged)
+          out.reason = "least-squares minimum (no root of the line equations here)";
         if (out.root_near) {
-          out = iterate(res, x, r);
-          total.iterations += out.iterations;
+          out = numerics::levenberg_marquardt(res, x, r, settings);
+          iterations += out.iterations;
         }
       }
       if (out.undefined)
-        return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", total.iterations);
+        return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
       if (last)
-        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason,
-                    total.iterations);
+        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
     }
     return failure(scene, slow, c, f, vtau,
                    LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge,
                                                   options_.basis, options_.oversampling),
-                   Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
-  }
-
-  /// Levenberg-Marquardt with Marquardt's diagonal scaling, from x (with r = res(x)); x and r hold
-  /// the last accepted iterate on return. The Jacobian (semi-analytic, LineResidual::jacobian, or a
-  /// forward difference of 2 terms + 3 residual evaluations, LineOptions::jacobian) is refreshed
-  /// only when needed: after an accepted step it takes Broyden's rank-one update
-  /// J += (dr - J s) s^T / (s^T s), which satisfies the secant condition J s = dr
-  /// (docs/line-solver.md, "Iteration"). When the updated Jacobian finds no descent step within a
-  /// few dampings, the Jacobian is recomputed; "no descent step" is decided with a fresh one only,
-  /// so the stopping reasons are those of the plain method.
-  Outcome iterate(const LineResidual<Real, Quadrature>& res, Vector& x, Vector& r) const {
-    using std::abs;
-    using std::pow;
-    using std::sqrt;
-    const int n = res.unknowns();
-    const Real eps = std::numeric_limits<Real>::epsilon();
-    const Real step_tol = pow(eps, Real(0.6));
-    const Real residual_tol = root_tolerance();
-    Real cost = r.squaredNorm();
-    Real mu = Real(1e-3);
-    Matrix jac(res.equations(), n);
-    Vector trial(n), rt(res.equations());
-    Outcome out;
-    bool fresh = false;
-    bool near_jacobian = false;  // the Jacobian was refreshed at a residual below tolerance
-    int stalled = 0;
-    // |r|^2 at the ends of the last iterations, for the slow-progress test below.
-    std::vector<Real> history;
-    const auto refresh_jacobian = [&]() {
-      if (options_.jacobian == LineJacobian::analytic && res.jacobian(x, rt, jac)) {
-        fresh = true;
-        return true;
-      }
-      for (int j = 0; j < n; ++j) {
-        const Real h = sqrt(eps) * std::max(Real(1), Real(abs(x[j])));
-        trial = x;
-        trial[j] += h;
-        if (!res(trial, rt)) {
-          trial[j] = x[j] - h;
-          if (!res(trial, rt)) return false;
-          jac.col(j) = (r - rt) / h;
-        } else {
-          jac.col(j) = (rt - r) / h;
-        }
-      }
-      fresh = true;
-      return true;
-    };
-    for (; out.iterations < options_.max_iterations; ++out.iterations) {
-      if (out.iterations == 0 && !refresh_jacobian()) {
-        out.undefined = true;
-        out.reason = "Jacobian undefined";
-        return out;
-      }
-      bool accepted = false;
-      Vector step;
-      for (;;) {
-        const Vector grad = jac.transpose() * r;
-        Vector diag = jac.colwise().squaredNorm().transpose();
-        for (int j = 0; j < n; ++j) diag[j] = std::max(diag[j], Real(1e-12));
-        // A fresh Jacobian gets the full damping range; an updated one a few tries before refresh.
-        const int attempts = fresh ? 40 : 4;
-        for (int attempt = 0; attempt < attempts; ++attempt) {
-          Matrix a = jac.transpose() * jac;
-          for (int j = 0; j < n; ++j) a(j, j) += mu * diag[j];
-          step = a.ldlt().solve(-grad);
-          trial = x + step;
-          if (res(trial, rt)) {
-            const Real trial_cost = rt.squaredNorm();
-            if (trial_cost < cost) {
-              accepted = true;
-              break;
-            }
-          }
-          mu *= 8;
-        }
-        if (accepted || fresh) break;
-        mu = std::max(Real(mu / pow(Real(8), Real(attempts))),
-                      Real(1e-12));  // the damping of before the tries
-        if (!refresh_jacobian()) {
-          out.undefined = true;
-          out.reason = "Jacobian undefined";
-          return out;
-        }
-      }
-      if (!accepted) {
-        out.reason = "no descent step (Levenberg-Marquardt damping exhausted)";
-        out.minimum = true;
-        return out;
-      }
-      // Broyden's update with the accepted step s and the change of residual rt - r.
-      const bool newton_step = fresh;
-      const Real reduction = (cost - rt.squaredNorm()) / cost;
-      const Real ss = step.squaredNorm();
-      if (ss > 0) jac += ((rt - r) - jac * step) * (step.transpose() / ss);
-      fresh = false;
-      x = trial;
-      r = rt;
-      cost = r.squaredNorm();
-      mu = std::max(mu / 4, Real(1e-12));
-      const Real rmax = r.cwiseAbs().maxCoeff();
-      // Near the root (residual below tolerance) the Jacobian is refreshed once: the next step is
-      // Newton's, which about squares the residual (5.7e-8 to 1.1e-11 at V tau = a0, N = 4, from a
-      // neighbouring speed's solution), and the updated Jacobian after it
-      // differs from the true one by O(the error at the refresh) (the secant condition), so that
-      // its step measures the remaining error. Converged: a step below eps^0.6 (1 + |x|) taken
-      // with a Jacobian refreshed at this stage's end (or a fresh one), residual below tolerance.
-      if (rmax <= residual_tol) {
-        if (step.cwiseAbs().maxCoeff() <= step_tol * (1 + x.cwiseAbs().maxCoeff()) &&
-            (newton_step || near_jacobian)) {
-          out.converged = true;
-          out.reason = "converged";
-          ++out.iterations;
-          return out;
-        }
-        if (!near_jacobian) {
-          if (!refresh_jacobian()) {
-            out.undefined = true;
-            out.reason = "Jacobian undefined";
-            return out;
-          }
-          near_jacobian = true;
-        }
-      }
-      if (rmax <= 4 * eps) {
-        out.converged = true;
-        out.reason = "converged (residual at rounding level)";
-        ++out.iterations;
-        return out;
-      }
-      // Slow progress: |r|^2 fell by less than 5% over the last 20 accepted steps while the
-      // residual is above tolerance. Near a root the steps converge quadratically; this is the
-      // crawl of Levenberg-Marquardt along the valley of a least-squares minimum with no root near
-      // (at a fold of the discrete equations, where the scaled Jacobian's smallest singular value
-      // falls to ~1e-5, docs/line-solver.md). Passing a near-fold on the way to a root, the
-      // iteration crawls too, but for fewer steps (at V tau = a0, N = 8: 12 steps, 3% in all).
-      history.push_back(cost);
-      if (rmax > residual_tol && history.size() > 20 &&
-          history[history.size() - 21] - cost < Real(0.05) * history[history.size() - 21]) {
-        out.reason =
-            "stalled: |r|^2 fell by less than 5% over 20 steps (a least-squares minimum, no root "
-            "near)";
-        out.minimum = true;
-        ++out.iterations;
-        return out;
-      }
-      // Stagnation (MINPACK's ftol test): a step that lowers |r|^2 by less than sqrt(eps) of
-      // itself. From an updated Jacobian, refresh it; from a fresh one three times running, the
-      // iterate sits at a least-squares minimum with no root of the equations near it.
-      if (rmax > residual_tol && reduction < sqrt(eps)) {
-        if (!newton_step) {
-          if (!fresh && !refresh_jacobian()) {
-            out.undefined = true;
-            out.reason = "Jacobian undefined";
-            return out;
-          }
-        } else if (++stalled >= 3) {
-          out.reason =
-              "stalled at a least-squares minimum, no root near (|r|^2 falls by < sqrt(eps) per "
-              "step)";
-          out.minimum = true;
-          ++out.iterations;
-          return out;
-        }
-      } else {
-        stalled = 0;
-      }
-    }
-    return out;
-  }
-
-  /// Newton's method on phi = |r|^2 / 2 from where Levenberg-Marquardt stopped at a least-squares
-  /// minimum (docs/line-solver.md, "Least-squares minima"; derivation in docs/theory.md section 9).
-  /// There the Jacobian J is nearly singular and r lies along its smallest left singular vector,
-  /// so the Gauss-Newton model J^T J misses the curvature of phi that matters, the second-order
-  /// term S = sum_i r_i grad^2 r_i (M2). S is taken by central differences of the gradient
-  /// g = J^T r (semi-analytic J) along the right singular directions of J in which it is not small
-  /// against J^T J: sigma^2 <= 1e3 |S v_min| (M3). With D = H V (the differences) and
-  /// E = D - J^T J V, S ~ E V^T + V E^T - V V^T E V^T, exact on span V. S is kept from step to
-  /// step (it varies slowly) and taken afresh when a step fails or before the stop is trusted.
-  /// Steps solve (J^T J + S + mu I) s = -g, mu = 0 when that is positive definite, accepted when
-  /// phi falls. Converged (M4): the Hessian with a fresh S positive definite and Newton's
-  /// predicted decrease g^T H^-1 g / 2 below the rounding of phi, 16 eps sqrt(m) |r| (each scaled
-  /// equation sums terms of order one): a strict local minimum. A residual below the root
-  /// tolerance on the way returns `root_near`.
-  Outcome minimise(const LineResidual<Real, Quadrature>& res, Vector& x, Vector& r) const {
-    using std::abs;
-    using std::cbrt;
-    using std::sqrt;
-    const int n = res.unknowns(), m = res.equations();
-    const Real eps = std::numeric_limits<Real>::epsilon();
-    const Real residual_tol = root_tolerance();
-    Outcome out;
-    out.reason = "iteration limit (least-squares minimisation)";
-    Matrix jac(m, n), jac_h(m, n), s_part(n, n);
-    Vector r_h(m), rt(m), g_plus(n), g_minus(n);
-    bool fresh = false;  // s_part was taken at the current x
-    Real mu = 0;
-    const auto undefined = [&out]() {
-      out.undefined = true;
-      out.reason = "Jacobian undefined";
-      return out;
-    };
-    // S at x from the gradient's central differences along the weak directions of J (M3).
-    const auto second_order = [&](const Matrix& jtj) {
-      const Eigen::SelfAdjointEigenSolver<Matrix> gauss(jtj);  // eigenvalues ascending
-      const Vector scale = jtj.diagonal().cwiseSqrt();         // |J e_j|: Marquardt's column scales
-      const auto hessian_times = [&](const Vector& v, Vector& hv) {
-        const Real h = cbrt(eps) / std::max(scale.cwiseProduct(v).norm(), eps);
-        if (!res.jacobian(x + h * v, r_h, jac_h)) return false;
-        g_plus = jac_h.transpose() * r_h;
-        if (!res.jacobian(x - h * v, r_h, jac_h)) return false;
-        g_minus = jac_h.transpose() * r_h;
-        hv = (g_plus - g_minus) / (2 * h);
-        return true;
-      };
-      Vector hv(n);
-      if (!hessian_times(gauss.eigenvectors().col(0), hv)) return false;
-      const Real s_scale = (hv - jtj * gauss.eigenvectors().col(0)).norm();
-      int k = 1;
-      while (k < n && gauss.eigenvalues()[k] <= 1000 * s_scale) ++k;
-      const Matrix v = gauss.eigenvectors().leftCols(k);
-      Matrix e(n, k);
-      e.col(0) = hv;
-      for (int j = 1; j < k; ++j) {
-        if (!hessian_times(v.col(j), hv)) return false;
-        e.col(j) = hv;
-      }
-      e -= jtj * v;
-      s_part = e * v.transpose() + v * e.transpose() - v * (v.transpose() * e) * v.transpose();
-      s_part = (s_part + s_part.transpose()).eval() / 2;
-      fresh = true;
-      return true;
-    };
-    for (; out.iterations < options_.max_iterations; ++out.iterations) {
-      if (!res.jacobian(x, r, jac)) return undefined();
-      if (r.cwiseAbs().maxCoeff() <= residual_tol) {
-        out.root_near = true;
-        out.reason = "root near";
-        return out;
-      }
-      const Real phi = r.squaredNorm() / 2;
-      const Real floor = 16 * eps * sqrt(Real(m)) * r.norm();  // rounding of phi
-      const Vector g = jac.transpose() * r;
-      const Matrix jtj = jac.transpose() * jac;
-      if (out.iterations == 0 && !second_order(jtj)) return undefined();
-      bool accepted = false;
-      for (;;) {
-        const Eigen::SelfAdjointEigenSolver<Matrix> newton(jtj + s_part);
-        const Vector& lambda = newton.eigenvalues();
-        const Vector qg = newton.eigenvectors().transpose() * g;
-        const Real lmin = lambda[0], lmax = lambda[n - 1];
-        const Real predicted =
-            lmin > 0 ? Real((qg.array().square() / lambda.array()).sum() / 2) : Real(0);
-        if (lmin > 0 && predicted <= floor) {
-          if (!fresh) {
-            if (!second_order(jtj)) return undefined();
-            continue;  // the stop is trusted with S taken here only
-          }
-          // Below the rounding of phi: converged, after one more Newton step where the model
-          // still promises more than eps phi and the step delivers it (kept if it lowers phi).
-          bool minimum = predicted <= 16 * eps * phi;
-          if (!minimum) {
-            const Vector step = -(newton.eigenvectors() * (qg.array() / lambda.array()).matrix());
-            const bool lower = res(x + step, rt) && rt.squaredNorm() / 2 < phi;
-            if (lower) x += step;
-            minimum = !lower || phi - rt.squaredNorm() / 2 <= floor;
-            accepted = lower;
-          }
-          if (minimum) {
-            if (accepted && !res(x, r)) return undefined();
-            out.converged = true;
-            out.reason = "least-squares minimum (no root of the line equations here)";
-            ++out.iterations;
-            return out;
-          }
-          break;
-        }
-        mu = lmin > 0 ? Real(0) : std::max(mu, 2 * abs(lmin));
-        for (int attempt = 0; attempt < 40 && !accepted; ++attempt) {
-          const Vector step =
-              -(newton.eigenvectors() * (qg.array() / (lambda.array() + mu)).matrix());
-          if (res(x + step, rt) && rt.squaredNorm() / 2 < phi) {
-            x += step;
-            accepted = true;
-          } else {
-            // From the smallest shift that tells: the curvature that matters is far below lmax.
-            mu = std::max(8 * mu, 2 * std::max(-lmin, Real(0)) + eps * lmax);
-          }
-        }
-        if (accepted || fresh) break;
-        if (!second_order(jtj)) return undefined();  // a stale S: take it here and try again
-        mu = 0;
-      }
-      if (!accepted) {
-        out.reason = "no descent step (least-squares minimisation)";
-        return out;
-      }
-      fresh = false;
-      mu /= 8;
-    }
-    res(x, r);
-    return out;
+                   Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 
   Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,

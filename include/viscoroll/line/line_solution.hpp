@@ -1,0 +1,89 @@
+// viscoroll: the line-contact solution (Panek & Kalker 1980, Sections 5 and 6): the contact zone
+// a(y), b(y), l, the penetration, the strip at each y and the rolling friction, as LineSolver
+// (line_solver.hpp) returns it; and the warnings of the line theory's domain of validity.
+#pragma once
+
+#include <string>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/line/line_shape.hpp>
+
+namespace viscoroll {
+
+/// The line-contact solution: the contact zone, the penetration, the line functions of Section 5
+/// and the rolling friction of Section 6.
+template <RealScalar Real, class Quadrature>
+struct LineSolution {
+  LineShape<Real> shape;  ///< a(y), b(y), l
+  Real d;                 ///< penetration (Eq. 27)
+  Real a_long_term;       ///< a0: half width at y = 0 of the static (V tau = 0) contact
+  Real l_long_term;       ///< l0: its half length
+  Real d_long_term;       ///< its penetration
+  Real chi;               ///< rolling-friction coefficient, Eq. (54) in the form of section 4
+  bool converged;         ///< the iteration met its tolerance (always true for a closed form)
+  /// The residual vanishes (max |r| <= 64 sqrt(eps)): a root of the line equations. False with
+  /// converged at a certified least-squares minimum where the equations have no root (the
+  /// residual is then reported, and a warning says so).
+  bool root;
+  std::string reason;                 ///< why it stopped
+  int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
+  Real residual;                      ///< max |r| of the scaled equations at the returned solution
+  std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
+
+  Real c1, vtau, f, compliance;
+
+  Real l() const { return shape.l; }
+  Real a(Real y) const { return shape.a(y); }
+  Real b(Real y) const { return shape.b(y); }
+  /// G(y) of Eq. (36); 0 for a static or elastic scene.
+  Real g(Real y) const { return functions(y).g; }
+  /// F0(y) of Eq. (33).
+  Real f0(Real y) const { return functions(y).f0; }
+  /// Q(y) of Eq. (46).
+  Real q(Real y) const { return functions(y).q; }
+
+  /// The strip at y (|y| < l): Eqs. (32), (35) across the contact.
+  StripPressure<Real, Quadrature> strip(Real y) const {
+    const auto s = functions(y);
+    return StripPressure<Real, Quadrature>(c1, s.a, s.b, s.g, vtau, f, compliance);
+  }
+  /// p(x, y), Eq. (35); zero outside the contact.
+  Real pressure(Real x, Real y) const {
+    using std::abs;
+    if (!(abs(y) < shape.l)) return Real(0);
+    return strip(y).pressure(x);
+  }
+
+  StripFunctions<Real> functions(Real y) const {
+    const Real a = shape.a(y), b = shape.b(y);
+    if (!(vtau > 0) || !(f > 0) || !(a > 0)) return {a, b, Real(0), c1 * a * a / 4, Real(0)};
+    return strip_functions(c1, a, b, vtau, f);
+  }
+};
+
+/// The line theory's domain (Section 3: the contact is slender, a(y) << l): a warning when
+/// l/a(0) < 3, and one when a(y) somewhere reaches l/3 (a(y) can exceed a(0), as at the dip of
+/// a(0) near V tau = 5 a0). a(y) is sampled at 65 points y = l k/64, k = 0..64. Empty inside it.
+template <RealScalar Real>
+std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
+  std::vector<std::string> warnings;
+  const Real l = shape.l, a0 = shape.a(Real(0));
+  const Real aspect = l / a0;
+  if (!(aspect >= 3))
+    warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
+                       " < 3: outside the line-contact theory's domain of validity");
+  Real a_max = a0, y_max = 0;
+  for (int k = 1; k <= 64; ++k) {
+    const Real y = l * Real(k) / 64, a = shape.a(y);
+    if (a > a_max) a_max = a, y_max = y;
+  }
+  if (a_max > a0 && !(l >= 3 * a_max))
+    warnings.push_back("a(y) = " + std::to_string(double(a_max)) +
+                       " at y = " + std::to_string(double(y_max)) +
+                       " is not small against l = " + std::to_string(double(l)) +
+                       " (l/max a(y) < 3): outside the line-contact theory's domain of validity");
+  return warnings;
+}
+
+}  // namespace viscoroll

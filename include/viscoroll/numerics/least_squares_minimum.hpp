@@ -1,0 +1,171 @@
+// viscoroll: a certified strict local minimum of phi = |r|^2 / 2 by Newton's method with the
+// second-order term S of the Hessian taken by differences of the gradient (docs/theory.md
+// section 9, (M1)-(M4)), for where Levenberg-Marquardt stops at a least-squares minimum with no
+// root near (levenberg_marquardt.hpp).
+//
+// There the Jacobian J is nearly singular and r lies along its smallest left singular vector
+// (M1), so the Gauss-Newton model J^T J misses the curvature of phi that matters, that of
+// S = sum_i r_i grad^2 r_i (M2).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <viscoroll/numerics/least_squares_problem.hpp>
+
+namespace viscoroll::detail {
+
+/// The second-order term S = sum_i r_i grad^2 r_i of the Hessian H of |r|^2 / 2 at x, into s_part,
+/// with jtj = J^T J at x (docs/theory.md section 9, (M3)). H v by central differences of the
+/// gradient g = J^T r, H v ~ (g(x + h v) - g(x - h v)) / (2h), h = eps^(1/3) / |D v| with
+/// D = diag(|J e_j|) (Marquardt's column scales): first along the eigenvector v_1 of the smallest
+/// eigenvalue of J^T J, which gives s = |S v_1|, then along every eigenvector of J^T J whose
+/// eigenvalue is at most 1e3 s. On those k directions V, with E = H V - J^T J V,
+/// S ~ E V^T + V E^T - V V^T E V^T (exact on span V). False where the problem's jacobian() is.
+template <class Real, class Problem>
+bool second_order_term(const Problem& problem, const numerics::DynamicVector<Real>& x,
+                       const numerics::DynamicMatrix<Real>& jtj,
+                       numerics::DynamicMatrix<Real>& s_part) {
+  using Vector = numerics::DynamicVector<Real>;
+  using Matrix = numerics::DynamicMatrix<Real>;
+  using std::cbrt;
+  const int n = problem.unknowns(), m = problem.equations();
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  Matrix jac_h(m, n);
+  Vector r_h(m), g_plus(n), g_minus(n);
+  const Eigen::SelfAdjointEigenSolver<Matrix> gauss(jtj);  // eigenvalues ascending
+  const Vector scale = jtj.diagonal().cwiseSqrt();         // |J e_j|: Marquardt's column scales
+  const auto hessian_times = [&](const Vector& v, Vector& hv) {
+    const Real h = cbrt(eps) / std::max(scale.cwiseProduct(v).norm(), eps);
+    if (!problem.jacobian(x + h * v, r_h, jac_h)) return false;
+    g_plus = jac_h.transpose() * r_h;
+    if (!problem.jacobian(x - h * v, r_h, jac_h)) return false;
+    g_minus = jac_h.transpose() * r_h;
+    hv = (g_plus - g_minus) / (2 * h);
+    return true;
+  };
+  Vector hv(n);
+  if (!hessian_times(gauss.eigenvectors().col(0), hv)) return false;
+  const Real s_scale = (hv - jtj * gauss.eigenvectors().col(0)).norm();
+  int k = 1;
+  while (k < n && gauss.eigenvalues()[k] <= 1000 * s_scale) ++k;
+  const Matrix v = gauss.eigenvectors().leftCols(k);
+  Matrix e(n, k);
+  e.col(0) = hv;
+  for (int j = 1; j < k; ++j) {
+    if (!hessian_times(v.col(j), hv)) return false;
+    e.col(j) = hv;
+  }
+  e -= jtj * v;
+  s_part = e * v.transpose() + v * e.transpose() - v * (v.transpose() * e) * v.transpose();
+  s_part = (s_part + s_part.transpose()).eval() / 2;
+  return true;
+}
+
+}  // namespace viscoroll::detail
+
+namespace viscoroll::numerics {
+
+/// Newton's method on phi = |r|^2 / 2 from x; needs the problem's jacobian() (a false return is
+/// reported `undefined`). x and r hold the last accepted iterate on return (r = problem(x)).
+/// The Hessian is J^T J + S, S from detail::second_order_term, kept from step to step (it varies
+/// slowly) and taken afresh when a step fails or before the stop is trusted. Steps solve
+/// (J^T J + S + mu I) s = -g in the eigenbasis of J^T J + S, mu = 0 when that is positive
+/// definite, else from 2 |lambda_min| up by factors of 8; accepted when phi falls. Converged
+/// (M4): the Hessian with a fresh S positive definite and Newton's predicted decrease
+/// g^T H^-1 g / 2 below the rounding of phi, 16 eps sqrt(m) |r| (each scaled equation sums terms
+/// of order one): a strict local minimum. A residual below the root tolerance on the way returns
+/// `root_near`.
+template <class Real, LeastSquaresProblem<Real> Problem>
+LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<Real>& x,
+                                          DynamicVector<Real>& r,
+                                          const LeastSquaresOptions<Real>& options = {}) {
+  const int n = problem.unknowns(), m = problem.equations();
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  using Vector = DynamicVector<Real>;
+  using Matrix = DynamicMatrix<Real>;
+  using std::abs;
+  using std::sqrt;
+  LeastSquaresOutcome out{.reason = "iteration limit (least-squares minimisation)"};
+  Matrix jac(m, n), s_part(n, n);
+  Vector rt(m);
+  bool fresh = false;  // s_part was taken at the current x
+  Real mu = 0;
+  const auto second_order = [&](const Matrix& jtj) {
+    return fresh = detail::second_order_term(problem, x, jtj, s_part);
+  };
+  for (; out.iterations < options.max_iterations; ++out.iterations) {
+    if (!problem.jacobian(x, r, jac)) return out.jacobian_undefined();
+    if (r.cwiseAbs().maxCoeff() <= options.root_tolerance) {
+      out.root_near = true;
+      out.reason = "root near";
+      return out;
+    }
+    const Real phi = r.squaredNorm() / 2;
+    const Real floor = 16 * eps * sqrt(Real(m)) * r.norm();  // rounding of phi
+    const Vector g = jac.transpose() * r;
+    const Matrix jtj = jac.transpose() * jac;
+    if (out.iterations == 0 && !second_order(jtj)) return out.jacobian_undefined();
+    bool accepted = false;
+    for (;;) {
+      const Eigen::SelfAdjointEigenSolver<Matrix> newton(jtj + s_part);
+      const Vector& lambda = newton.eigenvalues();
+      const Vector qg = newton.eigenvectors().transpose() * g;
+      const Real lmin = lambda[0], lmax = lambda[n - 1];
+      const Real predicted =
+          lmin > 0 ? Real((qg.array().square() / lambda.array()).sum() / 2) : Real(0);
+      if (lmin > 0 && predicted <= floor) {
+        if (!fresh) {
+          if (!second_order(jtj)) return out.jacobian_undefined();
+          continue;  // the stop is trusted with S taken here only
+        }
+        // Below the rounding of phi: converged, after one more Newton step where the model
+        // still promises more than eps phi and the step delivers it (kept if it lowers phi).
+        bool minimum = predicted <= 16 * eps * phi;
+        if (!minimum) {
+          const Vector step = -(newton.eigenvectors() * (qg.array() / lambda.array()).matrix());
+          const bool lower = problem(x + step, rt) && rt.squaredNorm() / 2 < phi;
+          if (lower) x += step;
+          minimum = !lower || phi - rt.squaredNorm() / 2 <= floor;
+          accepted = lower;
+        }
+        if (minimum) {
+          if (accepted && !problem(x, r)) return out.jacobian_undefined();
+          out.converged = true;
+          out.reason = "least-squares minimum (no root here)";
+          ++out.iterations;
+          return out;
+        }
+        break;
+      }
+      mu = lmin > 0 ? Real(0) : std::max(mu, 2 * abs(lmin));
+      for (int attempt = 0; attempt < 40 && !accepted; ++attempt) {
+        const Vector step =
+            -(newton.eigenvectors() * (qg.array() / (lambda.array() + mu)).matrix());
+        if (problem(x + step, rt) && rt.squaredNorm() / 2 < phi) {
+          x += step;
+          accepted = true;
+        } else {
+          // From the smallest shift that tells: the curvature that matters is far below lmax.
+          mu = std::max(8 * mu, 2 * std::max(-lmin, Real(0)) + eps * lmax);
+        }
+      }
+      if (accepted || fresh) break;
+      // A stale S: take it here and try again.
+      if (!second_order(jtj)) return out.jacobian_undefined();
+      mu = 0;
+    }
+    if (!accepted) {
+      out.reason = "no descent step (least-squares minimisation)";
+      return out;
+    }
+    fresh = false;
+    mu /= 8;
+  }
+  problem(x, r);
+  return out;
+}
+
+}  // namespace viscoroll::numerics

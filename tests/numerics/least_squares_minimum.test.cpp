@@ -1,0 +1,83 @@
+// numerics::least_squares_minimum on problems with known answers (tests/numerics/
+// least_squares_problems.hpp), independent of the line solver: Freudenstein and Roth's local
+// minimum with r != 0, at a singular J where the Gauss-Newton model has no curvature, certified
+// from where Levenberg-Marquardt stops and checked against its closed form; a root met on the way
+// handed back (root_near); a problem without Jacobian reported undefined; the iteration limit
+// reported and never as converged.
+#include <Eigen/Eigenvalues>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <viscoroll/numerics/least_squares_minimum.hpp>
+#include <viscoroll/numerics/levenberg_marquardt.hpp>
+
+#include "numerics/least_squares_problems.hpp"
+
+namespace {
+
+using namespace viscoroll::numerics;
+using namespace viscoroll::testing;
+
+const double eps = std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+TEST_CASE("numerics: least-squares minimum of Freudenstein and Roth, certified", "[numerics]") {
+  const FreudensteinRoth problem;
+  LsqVector x = point({0.5, -2}), r;
+  REQUIRE(problem(x, r));
+  const auto stall = levenberg_marquardt(problem, x, r);
+  REQUIRE(stall.minimum);
+  const auto out = least_squares_minimum(problem, x, r);
+  INFO(out.reason << " after " << out.iterations << " iterations, x = " << x.transpose());
+  REQUIRE(out.converged);
+  REQUIRE_FALSE(out.root_near);
+  REQUIRE(out.reason == "least-squares minimum (no root here)");
+  require_residual_at(problem, x, r);
+  // The stop (M4): Newton's predicted decrease below the rounding of phi, 16 eps sqrt(m) |r|;
+  // phi - phi* is that decrease to second order, and phi* itself is rounded by as much, so
+  // |phi - phi*| <= 32 eps sqrt(2) |r|, and (x - x*)^T H (x - x*) / 2 <= that with H the Hessian
+  // of phi at x*: |x - x*| <= sqrt(2 |phi - phi*| / lambda_min(H)).
+  const double phi = r.squaredNorm() / 2, phi_star = FreudensteinRoth::minimum_phi();
+  const double phi_tol = 32 * eps * std::sqrt(2.0) * r.norm();
+  REQUIRE(std::abs(phi - phi_star) <= phi_tol);
+  const Eigen::SelfAdjointEigenSolver<LsqMatrix> hessian(FreudensteinRoth::minimum_hessian());
+  REQUIRE(hessian.eigenvalues()[0] > 0);
+  REQUIRE((x - FreudensteinRoth::minimum()).norm() <=
+          std::sqrt(2 * phi_tol / hessian.eigenvalues()[0]));
+}
+
+TEST_CASE("numerics: least-squares minimum hands back a root it meets", "[numerics]") {
+  // Near Rosenbrock's root the Newton steps on phi reach max |r| below the root tolerance.
+  const Rosenbrock problem;
+  LsqVector x = point({1.001, 1}), r;
+  REQUIRE(problem(x, r));
+  const auto out = least_squares_minimum(problem, x, r);
+  INFO(out.reason << " after " << out.iterations << " iterations, x = " << x.transpose());
+  REQUIRE(out.root_near);
+  REQUIRE_FALSE(out.converged);
+  REQUIRE(r.cwiseAbs().maxCoeff() <= default_root_tolerance<double>());
+}
+
+TEST_CASE("numerics: least-squares minimum reports a missing Jacobian and its limit",
+          "[numerics]") {
+  LsqVector x = point({0.5, -2}), r;
+  const Rosenbrock without_jacobian{false};
+  REQUIRE(without_jacobian(x, r));
+  const auto undefined = least_squares_minimum(without_jacobian, x, r);
+  REQUIRE(undefined.undefined);
+  REQUIRE_FALSE(undefined.converged);
+  REQUIRE(undefined.reason == "Jacobian undefined");
+
+  // One Newton step from Freudenstein and Roth's start, far from the minimum.
+  const FreudensteinRoth problem;
+  REQUIRE(problem(x, r));
+  const double start_phi = r.squaredNorm() / 2;
+  const auto out = least_squares_minimum(problem, x, r, {.max_iterations = 1});
+  INFO(out.reason);
+  REQUIRE_FALSE(out.converged);
+  REQUIRE_FALSE(out.root_near);
+  REQUIRE(out.reason == "iteration limit (least-squares minimisation)");
+  REQUIRE(out.iterations == 1);
+  REQUIRE(r.squaredNorm() / 2 < start_phi);
+}
