@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
-#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/line/line_shape.hpp>
 
 namespace viscoroll {

@@ -129,10 +129,10 @@ class LineSolver {
   LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const {
     scene.validate();
     const Real c = material_.instantaneous_compliance();
-    const Real f = material_.creep_ratio();
-    const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
+    const PronyTerm<Real> memory = detail::single_memory_term(material_);
+    const auto slow = static_line_contact(scene.c1, scene.c2, (1 + memory.f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
-        problem(scene, slow, f, scene.speed * material_.relaxation_time()), options_.terms,
+        problem(scene, slow, memory.f, scene.speed * memory.tau), options_.terms,
         options_.leading_edge, options_.basis, options_.oversampling);
   }
 
@@ -150,8 +150,22 @@ class LineSolver {
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol{shape,  s.d, slow.a0, slow.l, slow.d,   Real(0), true, true,
-                 reason, 0,   Real(0), {},     scene.c1, Real(0), f,    c};
+    Solution sol{.shape = shape,
+                 .d = s.d,
+                 .a_long_term = slow.a0,
+                 .l_long_term = slow.l,
+                 .d_long_term = slow.d,
+                 .chi = Real(0),
+                 .converged = true,
+                 .root = true,
+                 .reason = reason,
+                 .iterations = 0,
+                 .residual = Real(0),
+                 .warnings = {},
+                 .c1 = scene.c1,
+                 .vtau = Real(0),
+                 .f = f,
+                 .compliance = c};
     add_warnings(sol);
     return sol;
   }
@@ -284,9 +298,22 @@ class LineSolver {
                 const Vector& r, bool converged, std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
-    Solution sol{
-        res.shape(x),      res.penetration(x), slow.a0, slow.l, slow.d,   Real(0), converged, root,
-        std::move(reason), iterations,         rmax,    {},     scene.c1, vtau,    f,         c};
+    Solution sol{.shape = res.shape(x),
+                 .d = res.penetration(x),
+                 .a_long_term = slow.a0,
+                 .l_long_term = slow.l,
+                 .d_long_term = slow.d,
+                 .chi = Real(0),
+                 .converged = converged,
+                 .root = root,
+                 .reason = std::move(reason),
+                 .iterations = iterations,
+                 .residual = rmax,
+                 .warnings = {},
+                 .c1 = scene.c1,
+                 .vtau = vtau,
+                 .f = f,
+                 .compliance = c};
     sol.chi = rolling_friction(sol);
     add_warnings(sol);
     if (converged && !root)
@@ -340,9 +367,12 @@ requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule
 auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
                                                    const Solution* start) const -> Solution {
   scene.validate();
+  // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic): the
+  // strips' G (36) and the leading-edge condition's kernel are formed from V tau and f.
   const Real c = material_.instantaneous_compliance();
-  const Real f = material_.creep_ratio();
-  const Real vtau = scene.speed * material_.relaxation_time();
+  const PronyTerm<Real> memory = detail::single_memory_term(material_);
+  const Real f = memory.f;
+  const Real vtau = scene.speed * memory.tau;
   const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
   const Real eps = std::numeric_limits<Real>::epsilon();
   if constexpr (Material::is_viscoelastic) {
