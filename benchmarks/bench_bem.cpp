@@ -52,7 +52,7 @@ void BM_bem_paper_scene(benchmark::State& state) {
 /// The paper's grid for N elements per semi-axis (static Hertz ellipse of the long-term
 /// compliance): the same grid BemSolver::solve uses.
 template <class Real, class Material>
-viscoroll::bem::BemGrid<Real> paper_grid(const Material& material, int n, double f) {
+viscoroll::BemGrid<Real> paper_grid(const Material& material, int n, double f) {
   viscoroll::BemOptions o;
   o.grid = n;
   const double c = (1 - 0.5) / (2 * std::acos(-1.0));

@@ -1,5 +1,5 @@
 // viscoroll::compiled (docs/building.md, "Compiled mode"): one solver instantiated once,
-// BemSolver<float, StandardLinearSolid<float>>.
+// BemSolver<float, StandardLinearSolid<float>> with its default memory-panel rule.
 // Compiled with VISCOROLL_COMPILED like its users, so that the other solvers' explicit
 // instantiation declarations keep them out of this file (they have files of their own).
 #include <viscoroll/bem/bem_solver.hpp>

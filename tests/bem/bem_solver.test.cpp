@@ -21,8 +21,8 @@ using viscoroll::BemOptions;
 using viscoroll::BemScene;
 using viscoroll::BemSolver;
 using viscoroll::BemSolverD;
+using viscoroll::hertz_contact;
 using viscoroll::StandardLinearSolid;
-using viscoroll::bem::hertz_contact;
 
 constexpr double f = 9, nu = 0.5, mu = 1;
 const double pi = std::acos(-1.0);
@@ -42,7 +42,7 @@ struct Errors {
 };
 
 Errors hertz_errors(const viscoroll::BemSolution<double>& s,
-                    const viscoroll::bem::HertzContact<double>& h) {
+                    const viscoroll::HertzContact<double>& h) {
   return {std::abs(s.a0 - h.a), std::abs(s.l - h.b), std::abs(s.d - h.d) / h.d};
 }
 

@@ -9,8 +9,8 @@
 #include <limits>
 #include <viscoroll/bem/hertz.hpp>
 
-using viscoroll::bem::hertz_contact;
-using viscoroll::bem::hertz_curvature_ratio;
+using viscoroll::hertz_contact;
+using viscoroll::hertz_curvature_ratio;
 
 TEST_CASE("bem: Ferrers' integrals (B8b) in elliptic integrals", "[bem]") {
   boost::math::quadrature::exp_sinh<double> rule;

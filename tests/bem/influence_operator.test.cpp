@@ -10,6 +10,7 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 
+using viscoroll::BemGrid;
 using viscoroll::GeneralizedMaxwell;
 using viscoroll::PronyTerm;
 using viscoroll::StandardLinearSolid;

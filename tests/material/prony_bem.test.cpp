@@ -21,7 +21,7 @@ TEST_CASE(
   CHECK(b[0].tau == Approx(a[0].tau).epsilon(1e-15));
   CHECK(relax.instantaneous_compliance() == Approx(sls.instantaneous_compliance()).epsilon(1e-15));
   CHECK(relax.creep_ratio() == Approx(9.0).epsilon(1e-15));
-  const viscoroll::bem::BemGrid<double> grid{5, 3, 0.1, 0.3};
+  const viscoroll::BemGrid<double> grid{5, 3, 0.1, 0.3};
   const double c = sls.instantaneous_compliance();
   const viscoroll::bem::InfluenceTable<double> ta(grid, c, a, 0.7), tb(grid, c, b, 0.7);
   for (int i = -4; i <= 4; ++i)

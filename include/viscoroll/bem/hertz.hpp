@@ -27,7 +27,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 
-namespace viscoroll::bem {
+namespace viscoroll {
 
 /// Hertz's elliptical contact: semi-axes along x and y, penetration and peak pressure.
 template <RealScalar Real>
@@ -66,10 +66,10 @@ HertzContact<Real> hertz_contact(Real c1, Real c2, Real compliance, Real load) {
   using boost::math::ellint_2;
   using std::cbrt;
   using std::sqrt;
-  viscoroll::detail::require_positive("c1", c1);
-  viscoroll::detail::require_positive("c2", c2);
-  viscoroll::detail::require_positive("compliance", compliance);
-  viscoroll::detail::require_positive("load", load);
+  detail::require_positive("c1", c1);
+  detail::require_positive("c2", c2);
+  detail::require_positive("compliance", compliance);
+  detail::require_positive("load", load);
   if constexpr (std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits) {
     // float: near the bracket's end k' = 1e-6, e = sqrt((1 - k')(1 + k')) rounds to 1 and K(e)
     // overflows (boost::math::overflow_error, measured for l/a >= 200); solve in double, round
@@ -80,7 +80,7 @@ HertzContact<Real> hertz_contact(Real c1, Real c2, Real compliance, Real load) {
   const Real compliance_load = compliance * load;
   const bool swap = c2 > c1;  // the short semi-axis lies along the larger curvature
   const Real big = swap ? c2 : c1, ratio = swap ? c1 / c2 : c2 / c1;
-  viscoroll::detail::require(ratio >= Real(1e-10), "c2/c1", c2 / c1, "1e-10 <= c2/c1 <= 1e10");
+  detail::require(ratio >= Real(1e-10), "c2/c1", c2 / c1, "1e-10 <= c2/c1 <= 1e10");
   const Real pi = boost::math::constants::pi<Real>();
   Real a, b, d;
   if (ratio == 1) {
@@ -112,4 +112,4 @@ HertzContact<Real> hertz_contact(Real c1, Real c2, Real compliance, Real load) {
   return h;
 }
 
-}  // namespace viscoroll::bem
+}  // namespace viscoroll

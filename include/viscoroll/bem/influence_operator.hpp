@@ -9,62 +9,65 @@
 // The coefficient depends only on the offset, so u = K * p is a discrete convolution; with p
 // zero-padded to nfx >= 2 nx - 1 by nfy >= 2 ny - 1 the circular convolution equals it (B7).
 // The kernel is even in y and, unless V tau = 0, not even in x: the operator is not symmetric.
+// The inverse of its continuum symbol (B11), applied the same way, preconditions the solver's
+// linear systems.
 #pragma once
 
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <unsupported/Eigen/FFT>
 #include <vector>
+#include <viscoroll/bem/bem_scene.hpp>
 #include <viscoroll/bem/rectangle_influence.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/material/generalized_maxwell.hpp>
 
-namespace viscoroll::bem {
+namespace viscoroll {
 
-/// A material the boundary-element solver accepts: a ConstitutiveModel (one relaxation time) or a
-/// PronySeriesModel (several).
-template <class M>
-concept MemoryModel = ConstitutiveModel<M> || PronySeriesModel<M>;
+namespace detail {
 
-/// The memory terms (f_k, tau_k) of Eq. (B10): those of a Prony series, or the single term
-/// (f, tau) of Eq. (1); none for an elastic material.
-template <MemoryModel M>
+/// Smallest 2^a 3^b 5^c >= n (sizes kissfft transforms fastest).
+inline int fft_size(int n) {
+  int best = 1;
+  while (best < n) best *= 2;
+  for (int p2 = 1; p2 < 2 * n; p2 *= 2)
+    for (int p3 = p2; p3 < 2 * n; p3 *= 3)
+      for (int p5 = p3; p5 < 2 * n; p5 *= 5)
+        if (p5 >= n && p5 < best) best = p5;
+  return best;
+}
+
+}  // namespace detail
+
+namespace bem {
+
+/// The memory terms (f_k, tau_k) of Eq. (B10) that act: the material's spectrum
+/// (ConstitutiveModel::memory_terms(), the single term (f, tau) of Eq. (1) for the standard linear
+/// solid) without its zero weights; none for an elastic material.
+template <ConstitutiveModel M>
 std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
   using Real = typename M::real_type;
   std::vector<PronyTerm<Real>> terms;
   if constexpr (M::is_viscoelastic) {
-    if constexpr (PronySeriesModel<M>) {
-      for (const auto& t : m.memory_terms())
-        if (t.f > 0) terms.push_back(PronyTerm<Real>{t.f, t.tau});
-    } else {
-      if (m.creep_ratio() > 0)
-        terms.push_back(PronyTerm<Real>{m.creep_ratio(), m.relaxation_time()});
-    }
+    for (const auto& t : m.memory_terms())
+      if (t.f > 0) terms.push_back(PronyTerm<Real>{t.f, t.tau});
   }
   return terms;
 }
 
-/// A uniform grid of nx x ny cells hx x hy, centred on the origin (nx, ny odd, so a row of cell
-/// centres lies on y = 0 and a column on x = 0). Cell (i, j) has centre
-/// ((i - (nx-1)/2) hx, (j - (ny-1)/2) hy); the flat index is i + nx j.
-template <RealScalar Real>
-struct BemGrid {
-  int nx, ny;
-  Real hx, hy;
-
-  Real x(int i) const { return Real(i - (nx - 1) / 2) * hx; }
-  Real y(int j) const { return Real(j - (ny - 1) / 2) * hy; }
-  std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
-  std::size_t index(int i, int j) const {
-    return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(j);
-  }
-};
-
 /// (B6): the influence coefficients per unit pressure of every offset (di, dj), |di| < nx,
-/// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k.
-template <RealScalar Real>
+/// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k. The memory
+/// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default).
+///   - InfluenceTable(grid, c, terms, V): the table of the grid's offsets for the memory terms
+///     (f_k, tau_k) at speed V, computed in coefficient_real_t<Real> and rounded once;
+///   - operator()(di, dj): the coefficient of offset (di, dj);
+///   - nx(), ny(): the grid's cell counts.
+template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
+requires NodalQuadratureRule<Quadrature, coefficient_real_t<Real>>
 class InfluenceTable {
  public:
   InfluenceTable(const BemGrid<Real>& grid, Real compliance,
@@ -84,7 +87,8 @@ class InfluenceTable {
       for (const auto& t : terms) {
         const W length = W(speed) * W(t.tau);
         // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4).
-        const std::vector<W> mem = length > 0 ? memory_row<W>(m, y, hx, hy, length) : row;
+        const std::vector<W> mem =
+            length > 0 ? memory_row<W, Quadrature>(m, y, hx, hy, length) : row;
         for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
       }
       for (int i = -m; i <= m; ++i)
@@ -109,29 +113,20 @@ class InfluenceTable {
   std::vector<Real> k_;
 };
 
-namespace detail {
-
-/// Smallest 2^a 3^b 5^c >= n (sizes kissfft transforms fastest).
-inline int fft_size(int n) {
-  int best = 1;
-  while (best < n) best *= 2;
-  for (int p2 = 1; p2 < 2 * n; p2 *= 2)
-    for (int p3 = p2; p3 < 2 * n; p3 *= 3)
-      for (int p5 = p3; p5 < 2 * n; p5 *= 5)
-        if (p5 >= n && p5 < best) best = p5;
-  return best;
-}
-
-}  // namespace detail
-
 /// (B7): the operator u = K * p applied by FFT (Eigen's FFT, kissfft back end) on the grid
-/// zero-padded to nfx x nfy. apply() costs two 2-D transforms of the padded size.
+/// zero-padded to nfx x nfy.
+///   - ConvolutionOperator(table): the kernel's padded spectrum, from an InfluenceTable;
+///   - apply(p, u): u = K * p, two 2-D transforms of the padded size;
+///   - apply_symbol(symbol, p, u): the same with another spectrum (the preconditioner of (B11));
+///   - nx(), ny(): the grid; fft_nx(), fft_ny(): the padded transform's size.
+/// apply and apply_symbol share work arrays: one operator serves one thread.
 template <RealScalar Real>
 class ConvolutionOperator {
  public:
   using Complex = std::complex<Real>;
 
-  explicit ConvolutionOperator(const InfluenceTable<Real>& table)
+  template <class Quadrature>
+  explicit ConvolutionOperator(const InfluenceTable<Real, Quadrature>& table)
       : nx_(table.nx()),
         ny_(table.ny()),
         nfx_(detail::fft_size(2 * table.nx() - 1)),
@@ -226,9 +221,40 @@ class ConvolutionOperator {
   mutable Eigen::FFT<Real> fft_;
 };
 
+/// (B11): the inverse continuum symbol |k| / (2 pi c (1 + sum f_k / (1 - i k_x V tau_k))) on
+/// the padded grid, |k| the discrete (finite-difference) wavenumber; the zero mode gets the
+/// value of the lowest non-zero one. c is the instantaneous compliance, (f_k, tau_k) the memory
+/// terms, V the speed; ConvolutionOperator::apply_symbol applies it.
+template <RealScalar Real>
+std::vector<std::complex<Real>> preconditioner_symbol(const BemGrid<Real>& grid,
+                                                      const ConvolutionOperator<Real>& op, Real c,
+                                                      const std::vector<PronyTerm<Real>>& terms,
+                                                      Real speed) {
+  using Complex = std::complex<Real>;
+  using std::sin;
+  using std::sqrt;
+  const Real pi = boost::math::constants::pi<Real>();
+  const int nfx = op.fft_nx(), nfy = op.fft_ny();
+  std::vector<Complex> s(static_cast<std::size_t>(nfx) * static_cast<std::size_t>(nfy));
+  const Real kmin = std::min(2 * pi / (Real(nfx) * grid.hx), 2 * pi / (Real(nfy) * grid.hy));
+  for (int n = 0; n < nfy; ++n)
+    for (int m = 0; m < nfx; ++m) {
+      const int mm = m <= nfx / 2 ? m : m - nfx, nn = n <= nfy / 2 ? n : n - nfy;
+      const Real kx = 2 * pi * Real(mm) / (Real(nfx) * grid.hx),
+                 ky = 2 * pi * Real(nn) / (Real(nfy) * grid.hy);
+      const Real qx = 2 * sin(kx * grid.hx / 2) / grid.hx, qy = 2 * sin(ky * grid.hy / 2) / grid.hy;
+      const Real k = std::max(sqrt(qx * qx + qy * qy), kmin);
+      Complex memory(1);
+      for (const auto& t : terms) memory += t.f / Complex(1, -kx * speed * t.tau);
+      s[static_cast<std::size_t>(m) + static_cast<std::size_t>(nfx) * static_cast<std::size_t>(n)] =
+          k / (2 * pi * c * memory);
+    }
+  return s;
+}
+
 /// The direct O((nx ny)^2) sum u = K * p, for tests of the FFT apply.
-template <RealScalar Real, class In, class Out>
-void apply_direct(const InfluenceTable<Real>& table, const In& p, Out& u) {
+template <RealScalar Real, class Quadrature, class In, class Out>
+void apply_direct(const InfluenceTable<Real, Quadrature>& table, const In& p, Out& u) {
   const int nx = table.nx(), ny = table.ny();
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
@@ -240,4 +266,5 @@ void apply_direct(const InfluenceTable<Real>& table, const In& p, Out& u) {
     }
 }
 
-}  // namespace viscoroll::bem
+}  // namespace bem
+}  // namespace viscoroll

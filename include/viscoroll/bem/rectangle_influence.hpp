@@ -14,44 +14,24 @@
 //   M_L(X_i) = e^(-hx/L) M_L(X_{i+1}) + (1/L) int_{X_i}^{X_i + hx} e^(-(s - X_i)/L) K_e(s, Y) ds,
 // with panels graded towards the kinks of K_e at s = +-hx/2 and the tail beyond the last offset
 // on panels graded in t = (s - X_max)/L (B5).
+//
+// Quadrature: each panel of (B4)-(B5) is integrated by a nodal rule (NodalQuadratureRule of
+// core/concepts.hpp), by default MemoryPanelRule, 16-point Gauss-Legendre; the grading makes every
+// panel's integrand analytic well beyond the panel, so that the default reaches about eps. The far
+// field (B2) keeps its own family of Gauss-Legendre rules: its point count is chosen per offset
+// from the distance to the singularity (gauss_points_needed), which no single fixed rule matches.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
-namespace viscoroll::bem {
-
-/// The type the coefficients are computed in: at least double (the far-field and memory work
-/// needs more than float's 24 bits), Real itself when it is wider.
-template <class Real>
-using coefficient_real_t =
-    std::conditional_t<(std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits),
-                       double, Real>;
-
-/// (B1): the primitive F(u, v) = u asinh(v/|u|) + v asinh(u/|v|) of 1/sqrt(u^2 + v^2).
-template <RealScalar Real>
-Real love_primitive(Real u, Real v) {
-  using std::abs;
-  using std::asinh;
-  Real s = 0;
-  if (u != 0) s += u * asinh(v / abs(u));
-  if (v != 0) s += v * asinh(u / abs(v));
-  return s;
-}
-
-/// (B1) literally: the four-corner difference of F. Exact near the rectangle; loses about
-/// log10((R^2/(hx hy)) ln R) digits at distance R.
-template <RealScalar Real>
-Real rectangle_influence_closed_form(Real x, Real y, Real hx, Real hy) {
-  const Real x1 = x - hx / 2, x2 = x + hx / 2, y1 = y - hy / 2, y2 = y + hy / 2;
-  return love_primitive(x2, y2) - love_primitive(x1, y2) - love_primitive(x2, y1) +
-         love_primitive(x1, y1);
-}
+namespace viscoroll {
 
 namespace detail {
 
@@ -93,6 +73,45 @@ int gauss_points_needed(Real dist_over_half_length) {
 
 }  // namespace detail
 
+namespace bem {
+
+/// The type the coefficients are computed in: at least double (the far-field and memory work
+/// needs more than float's 24 bits), Real itself when it is wider.
+template <class Real>
+using coefficient_real_t =
+    std::conditional_t<(std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits),
+                       double, Real>;
+
+/// The default rule of the memory panels (B4)-(B5): 16-point Gauss-Legendre in the coefficient
+/// type. Another NodalQuadratureRule takes its place through memory_row's, InfluenceTable's and
+/// BemSolver's Quadrature parameter; its nodes and weights are used in the coefficient type. A
+/// rule of more points measures the default's quadrature error: GaussLegendre<double, 24> and
+/// GaussLegendre<long double, 32> agree with it to about 10 eps. Fewer points set the table up
+/// faster but are not at rounding level: 8 points leave 1e-12 .. 2e-11 relative
+/// (tests/bem/bem_quadrature.test.cpp).
+template <class Real>
+using MemoryPanelRule = GaussLegendre<coefficient_real_t<Real>, 16>;
+
+/// (B1): the primitive F(u, v) = u asinh(v/|u|) + v asinh(u/|v|) of 1/sqrt(u^2 + v^2).
+template <RealScalar Real>
+Real love_primitive(Real u, Real v) {
+  using std::abs;
+  using std::asinh;
+  Real s = 0;
+  if (u != 0) s += u * asinh(v / abs(u));
+  if (v != 0) s += v * asinh(u / abs(v));
+  return s;
+}
+
+/// (B1) literally: the four-corner difference of F. Exact near the rectangle; loses about
+/// log10((R^2/(hx hy)) ln R) digits at distance R.
+template <RealScalar Real>
+Real rectangle_influence_closed_form(Real x, Real y, Real hx, Real hy) {
+  const Real x1 = x - hx / 2, x2 = x + hx / 2, y1 = y - hy / 2, y2 = y + hy / 2;
+  return love_primitive(x2, y2) - love_primitive(x1, y2) - love_primitive(x2, y1) +
+         love_primitive(x1, y1);
+}
+
 /// K_e(x, y) of (B1) to about 100 eps relative at every offset: the closed form within two cell
 /// sizes of the rectangle, tensor Gauss-Legendre (B2) beyond, where the closed form cancels.
 template <RealScalar Real>
@@ -119,9 +138,11 @@ Real rectangle_influence(Real x, Real y, Real hx, Real hy) {
 }
 
 /// (B4), (B5): the memory coefficients M_L(X_i, Y) of (B3) for X_i = i hx, i = -m .. m, at one Y,
-/// for L > 0. Returns 2m + 1 values, index i + m. L = 0 gives K_e itself (the limit of (B3)).
-template <RealScalar Real>
-std::vector<Real> memory_row(int m, Real y, Real hx, Real hy, Real length) {
+/// for L > 0, each panel integrated by the rule Quadrature. Returns 2m + 1 values, index i + m.
+/// L = 0 gives K_e itself (the limit of (B3)).
+template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
+requires NodalQuadratureRule<Quadrature, Real> std::vector<Real> memory_row(int m, Real y, Real hx,
+                                                                            Real hy, Real length) {
   using std::abs;
   using std::exp;
   using std::log;
@@ -145,15 +166,14 @@ std::vector<Real> memory_row(int m, Real y, Real hx, Real hy, Real length) {
     if (gap < hx)
       depth = static_cast<int>(std::ceil(static_cast<double>(log(hx / gap) / log(Real(2))))) + 2;
   }
-  using Rule = GaussLegendre<Real, 16>;
-  const auto& gx = Rule::nodes();
-  const auto& gw = Rule::weights();
+  const auto& gx = Quadrature::nodes();
+  const auto& gw = Quadrature::weights();
   const auto panel = [&](Real a, Real b, Real origin) {
     const Real half = (b - a) / 2, mid = (a + b) / 2;
     Real s = 0;
-    for (std::size_t k = 0; k < gx.size(); ++k) {
-      const Real x = mid + half * gx[k];
-      s += gw[k] * exp(-(x - origin) / L) * ke(x);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(Quadrature::points); ++k) {
+      const Real x = mid + half * Real(gx[k]);
+      s += Real(gw[k]) * exp(-(x - origin) / L) * ke(x);
     }
     return s * half / L;
   };
@@ -205,4 +225,5 @@ std::vector<Real> memory_row(int m, Real y, Real hx, Real hy, Real length) {
   return out;
 }
 
-}  // namespace viscoroll::bem
+}  // namespace bem
+}  // namespace viscoroll

@@ -1,22 +1,32 @@
 // viscoroll: restarted GMRES with right preconditioning (Saad & Schultz 1986; Saad, Iterative
-// Methods for Sparse Linear Systems, 2nd ed., Alg. 9.5), for the non-symmetric active-set systems
-// of the boundary-element solver. Modified Gram-Schmidt Arnoldi, Givens rotations.
+// Methods for Sparse Linear Systems, 2nd ed., Alg. 9.5) for a non-symmetric linear system given
+// only by the action of its matrix: modified Gram-Schmidt Arnoldi, Givens rotations. The active-set
+// solver (numerics/active_set.hpp) solves its restricted systems with it.
 #pragma once
 
 #include <Eigen/Core>
 #include <cmath>
-#include <vector>
 
-namespace viscoroll::bem::detail {
+namespace viscoroll::numerics {
 
+/// What gmres() did.
 struct GmresReport {
-  bool converged = false;
+  bool converged = false;        ///< ||b - A x|| <= tol ||b|| reached
   int iterations = 0;            ///< Arnoldi steps over all cycles
   double relative_residual = 0;  ///< ||b - A x|| / ||b|| (true residual at exit)
 };
 
-/// Solves A x = b from the initial guess in x; apply_a(v, out) computes A v, apply_m(v, out) the
-/// right preconditioner M v (A M y = b - A x0, x = x0 + M y). Stops at ||b - A x|| <= tol ||b||.
+/// Solves A x = b (n unknowns) from the initial guess in x, which it overwrites with the solution.
+///   - apply_a(v, out): out = A v, for v a Vector or a column of an n-row Matrix (an Eigen
+///     expression), out a Vector of n entries;
+///   - apply_m(v, out): out = M v, the right preconditioner (A M y = b - A x0, x = x0 + M y; an
+///     approximate inverse of A, or the identity); out may have to be resized to n;
+///   - tol: stops at ||b - A x|| <= tol ||b||, the true residual, recomputed after each cycle (a
+///     cycle ends early once the Givens estimate of the residual is under tol ||b|| / 2);
+///   - restart: Arnoldi steps per cycle (the Krylov basis holds restart + 1 vectors of n);
+///   - max_iterations: Arnoldi steps over all cycles; reaching it returns converged == false.
+/// b = 0 returns x = 0. Each step costs one apply_m and one apply_a; each cycle one more of each
+/// (the correction M V y and the true residual), the start one apply_a.
 template <class Real, class ApplyA, class ApplyM>
 GmresReport gmres(ApplyA&& apply_a, ApplyM&& apply_m,
                   const Eigen::Matrix<Real, Eigen::Dynamic, 1>& b,
@@ -92,4 +102,4 @@ GmresReport gmres(ApplyA&& apply_a, ApplyM&& apply_m,
   return report;
 }
 
-}  // namespace viscoroll::bem::detail
+}  // namespace viscoroll::numerics

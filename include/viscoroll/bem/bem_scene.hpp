@@ -1,0 +1,137 @@
+// viscoroll: what the boundary-element solver (bem_solver.hpp) is given and what it returns: the
+// scene (Eqs. 12, 13, 27), the runtime options, the grid of cells and the solution.
+//
+// Units and conventions: the roller moves towards +x; x is measured in the moving frame from the
+// roller's lowest point; the gap profile h(x, y) (default C1 x^2/2 + C2 y^2/2) gives the paper's
+// shape S = d - h (Eq. 27) and the gap g = u - S = u - d + h >= 0 (Eq. 13 in contact, g = 0).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+#include <viscoroll/bem/hertz.hpp>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/validate.hpp>
+
+namespace viscoroll {
+
+/// A rigid roller of curvatures c1 (across, x) and c2 (along, y) under total load `load`, rolling
+/// towards +x at `speed`; `profile`, when set, replaces the doubly parabolic gap
+/// h = c1 x^2/2 + c2 y^2/2 (S = d - h, Eq. 27). c1 and c2 still size the grid (the static Hertz
+/// ellipse of the long-term compliance) and c1 enters chi (Eq. 51).
+template <RealScalar Real>
+struct BemScene {
+  Real c1;                                       ///< curvature across the roller (x), 1/m
+  Real c2;                                       ///< curvature along the roller (y), 1/m
+  Real load;                                     ///< total load P, N
+  Real speed;                                    ///< rolling speed V, m/s
+  std::function<Real(Real, Real)> profile = {};  ///< h(x, y), or empty for the parabolic gap
+
+  /// Throws std::invalid_argument naming the parameter unless c1 > 0, c2 > 0, 1e-10 <= c2/c1 <=
+  /// 1e10, load > 0, speed >= 0, all finite. (The profile's values are checked by
+  /// BemSolver::solve, at the cell centres of its grid.)
+  void validate() const {
+    detail::require_positive("c1", c1);
+    detail::require_positive("c2", c2);
+    detail::require(c2 / c1 >= Real(1e-10) && c2 / c1 <= Real(1e10), "c2/c1", c2 / c1,
+                    "1e-10 <= c2/c1 <= 1e10");
+    detail::require_positive("load", load);
+    detail::require_non_negative("speed", speed);
+  }
+
+  /// h(x, y): the profile, or c1 x^2/2 + c2 y^2/2.
+  Real gap_profile(Real x, Real y) const {
+    return profile ? profile(x, y) : c1 * x * x / 2 + c2 * y * y / 2;
+  }
+};
+
+/// Runtime settings of the boundary-element solver.
+struct BemOptions {
+  /// Elements per semi-axis of the static (V tau = 0, long-term) Hertz contact ellipse, in each
+  /// direction: hx = a_H / grid, hy = b_H / grid.
+  int grid = 16;
+  /// The grid covers at least `extent` semi-axes each way from the roller's lowest point.
+  double extent = 1.6;
+  /// GMRES stops at relative residual `tolerance` (or 32 eps of the scalar, if larger); the
+  /// active set must then be unchanged.
+  double tolerance = 1e-10;
+  int max_active_set_iterations = 200;
+  int max_krylov_iterations = 5000;  ///< GMRES steps over all active-set iterations
+  int restart = 80;                  ///< GMRES steps per cycle
+  /// Right-precondition GMRES with the inverse of the continuum symbol (B11).
+  bool precondition = true;
+
+  /// The most cells a grid may have, (2 ceil(extent grid) + 1)^2: the padded transforms then
+  /// take 4 x 16 bytes per cell per complex array (about 270 MB in double).
+  static constexpr long long max_cells = 1LL << 22;
+
+  /// Throws std::invalid_argument naming the first option out of its range.
+  void validate() const {
+    detail::require(grid >= 2 && grid <= 4096, "grid", grid, "2 <= grid <= 4096");
+    detail::require(extent >= 1.6 && extent <= 64, "extent", extent, "1.6 <= extent <= 64");
+    const long long side = 2 * static_cast<long long>(std::ceil(extent * grid - 1e-9)) + 1;
+    detail::require(side * side <= max_cells, "grid", grid,
+                    "(2 ceil(extent grid) + 1)^2 <= 4194304 cells (grid <= 639 at extent = " +
+                        detail::format_value(extent) + ": " + std::to_string(side * side) +
+                        " cells asked)");
+    detail::require(tolerance >= 1e-15 && tolerance <= 1e-3, "tolerance", tolerance,
+                    "1e-15 <= tolerance <= 1e-3");
+    detail::require(max_active_set_iterations >= 1 && max_active_set_iterations <= 100000,
+                    "max_active_set_iterations", max_active_set_iterations,
+                    "1 <= max_active_set_iterations <= 100000");
+    detail::require(max_krylov_iterations >= 1 && max_krylov_iterations <= 10000000,
+                    "max_krylov_iterations", max_krylov_iterations,
+                    "1 <= max_krylov_iterations <= 10000000");
+    detail::require(restart >= 2 && restart <= 1000, "restart", restart, "2 <= restart <= 1000");
+  }
+};
+
+/// A uniform grid of nx x ny cells hx x hy, centred on the origin (nx, ny odd, so a row of cell
+/// centres lies on y = 0 and a column on x = 0). Cell (i, j) has centre
+/// ((i - (nx-1)/2) hx, (j - (ny-1)/2) hy); the flat index is i + nx j.
+///   - x(i), y(j): the centre of column i, of row j;
+///   - size(): nx ny; index(i, j): i + nx j.
+template <RealScalar Real>
+struct BemGrid {
+  int nx, ny;
+  Real hx, hy;
+
+  Real x(int i) const { return Real(i - (nx - 1) / 2) * hx; }
+  Real y(int j) const { return Real(j - (ny - 1) / 2) * hy; }
+  std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(j);
+  }
+};
+
+/// The boundary-element solution: pressure on the grid, the contact's measures, diagnostics.
+template <RealScalar Real>
+struct BemSolution {
+  BemGrid<Real> grid;
+  std::vector<Real> pressure;  ///< cell pressures, flat index i + nx j (grid.index)
+  std::vector<Real> gap;  ///< g = u - d + h at the cell centres (0 in contact to the tolerance)
+  Real d;                 ///< penetration (Eq. 27)
+  Real a0;                ///< a(0): half width of the contact on y = 0 (B12, sub-cell)
+  Real b0;                ///< b(0): offset of its centre ahead of the roller (Eq. 29)
+  Real l;                 ///< half length of the contact (B12, sub-cell)
+  Real chi;               ///< rolling friction C1 int x p / int p (Eq. 51)
+  Real load;              ///< hx hy sum p (equals the scene's load to the tolerance)
+  HertzContact<Real> long_term;  ///< the static Hertz contact of the long-term compliance
+  int contact_cells;             ///< cells with p > 0
+  bool converged;         ///< every claimed quantity holds to the tolerance (else see reason)
+  std::string reason;     ///< "converged", or why not
+  int iterations;         ///< active-set iterations
+  int krylov_iterations;  ///< GMRES steps over all active-set iterations
+  Real residual;          ///< max complementarity violation relative to d (B11)
+  /// Quantities the solution does not claim although it converged (B12's edge model violated).
+  std::vector<std::string> warnings;
+  double seconds_setup;  ///< influence table and its transform
+  double seconds_solve;  ///< active-set iteration
+
+  /// The pressure of cell (i, j).
+  Real p(int i, int j) const { return pressure[grid.index(i, j)]; }
+};
+
+}  // namespace viscoroll
