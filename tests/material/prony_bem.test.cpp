@@ -4,8 +4,8 @@
 #include <viscoroll/bem/influence_operator.hpp>
 #include <viscoroll/material/prony.hpp>
 
-static_assert(viscoroll::bem::MemoryModel<viscoroll::PronyRelaxation<double>>);
-static_assert(viscoroll::bem::MemoryModel<viscoroll::PronyCreep<double>>);
+static_assert(viscoroll::ConstitutiveModel<viscoroll::PronyRelaxation<double>>);
+static_assert(viscoroll::ConstitutiveModel<viscoroll::PronyCreep<double>>);
 
 TEST_CASE(
     "prony: a relaxation spectrum's memory terms are its creep form, one term the standard linear "
