@@ -70,8 +70,6 @@ struct LineOptions {
   /// plus one Jacobian when it is refreshed: ~2.5 residual evaluations semi-analytic, 2 terms + 3
   /// by differences).
   int max_iterations = 100;
-  /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
-  LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
   /// Expansion variable of a(y), b(y); LineBasis::s_mapped with oversampling for the slow regime.
   LineBasis basis = LineBasis::t_squared;
   /// Collocation points per coefficient of b(y): the equations hold at oversampling (terms + 1)
@@ -205,7 +203,7 @@ class LineSolver {
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
         problem(scene, slow, f, scene.speed * material_.relaxation_time()), options_.terms,
-        options_.leading_edge, options_.basis, options_.oversampling);
+        options_.basis, options_.oversampling);
   }
 
  private:
@@ -318,8 +316,8 @@ class LineSolver {
     }
     Outcome total;
     for (std::size_t k = 0; k < stages.size(); ++k) {
-      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge,
-                                               options_.basis, options_.oversampling);
+      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.basis,
+                                               options_.oversampling);
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
@@ -332,8 +330,7 @@ class LineSolver {
       total.iterations += out.iterations;
       const bool last = k + 1 == stages.size();
       if (last && out.minimum && options_.least_squares &&
-          options_.jacobian == LineJacobian::analytic &&
-          options_.leading_edge == LeadingEdgeForm::exterior) {
+          options_.jacobian == LineJacobian::analytic) {
         // The paper's least-squares solution where the equations have no root; if Newton's
         // method on |r|^2 finds a root after all, Levenberg-Marquardt certifies it.
         out = minimise(res, x, r);
@@ -353,8 +350,8 @@ class LineSolver {
                     total.iterations);
     }
     return failure(scene, slow, c, f, vtau,
-                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge,
-                                                  options_.basis, options_.oversampling),
+                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
+                                                  options_.oversampling),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", total.iterations);
   }
 
