@@ -72,6 +72,12 @@ Real finite_part(const LineNodes<Real>& nd, const std::vector<Real>& df) {
   return fp;
 }
 
+/// The factor of df_j in finite_part, w_j / |y'_j - y| (the Jacobian's, docs/theory.md section 6).
+template <RealScalar Real>
+Real finite_part_weight(const LineNodes<Real>& nd, std::size_t j) {
+  return nd.weight[j] / nd.dist[j];
+}
+
 /// Lambda[F](y) = FP[F](y) + F(y) ln 4(l^2 - y^2), fy = F(y): Eq. (24), the near-field operator.
 template <RealScalar Real>
 Real near_field(const LineNodes<Real>& nd, const std::vector<Real>& df, Real fy) {
@@ -290,14 +296,15 @@ class LineOperators {
     LineNodes<Real> nd;
     nd.d1 = l_ - y;
     nd.d2 = l_ + y;
-    std::vector<Real> s, w;
-    for (const int sign : {1, -1}) {
-      s.clear();
-      w.clear();
-      detail::append_scaled_nodes<Quadrature>(s, w, sign > 0 ? nd.d1 : nd.d2, scale, levels,
-                                              options_.end_levels);
-      nd.add_side(y, sign, s, w);
-    }
+    std::vector<Real> s1, w1, s2, w2;
+    detail::append_scaled_nodes<Quadrature>(s1, w1, nd.d1, scale, levels, options_.end_levels);
+    detail::append_scaled_nodes<Quadrature>(s2, w2, nd.d2, scale, levels, options_.end_levels);
+    const std::size_t count = s1.size() + s2.size();
+    nd.yp.reserve(count);
+    nd.dist.reserve(count);
+    nd.weight.reserve(count);
+    nd.add_side(y, 1, s1, w1);
+    nd.add_side(y, -1, s2, w2);
     return nd;
   }
 

@@ -341,7 +341,7 @@ auto LineResidual<Real, Quadrature, LeadingEdge>::jacobian(const Vector& x, Vect
     // Node values: d F(y'_j) at fixed t'_j; the differences' second terms via the weight sums.
     Real w0sum = 0, wqsum = 0;
     for (std::size_t j = 0; j < count; ++j) {
-      const Real w0 = nd.weight[j] / nd.dist[j];
+      const Real w0 = finite_part_weight(nd, j);
       w0sum += w0;
       wqsum += slopes.weight[j];
       const auto& dj = dn[j];
