@@ -1,7 +1,8 @@
 // The kernels and line operators of the line-contact theory, for float, double and long double.
 //
-// 1. kappa and psi of the leading-edge condition (L2) (docs/line-kernels.md), one call at
-//    z = 1e-3 (ascending series), 1 and 10 (trapezoidal rule) and 100 (asymptotic series).
+// 1. kappa and psi of the paper's leading-edge condition (44) in the form (L2)
+//    (docs/line-kernels.md), one call at z = 1e-3 (ascending series), 1 and 10 (trapezoidal rule)
+//    and 100 (asymptotic series).
 // 2. The line operators of line/line_operators.hpp (GaussLegendre<Real, 12> on graded panels, the
 //    line solver's default rule), one evaluation at y = l/3 of F(y) = (1 - y^2/l^2)/4, the static
 //    F0 = C1 a^2/4 of a contact with a0 = 1, C1 = 1:
@@ -9,13 +10,15 @@
 //      near field       FP[F](y) + F(y) ln 4(l^2 - y^2)                      Eqs. (24), (25)
 //      extended         I[F, x](y), Eq. (41), the F0 term of the extended approximation (26)
 //      extended_dx      d/dx I[F, x](y), the F1 term of (26)
-//      leading_edge     the right side of (44) in the form (L2) (kappa and psi of part 1)
+//      leading_edge     the right side of (44) in the form (L2) (kappa and psi of part 1),
+//                       PaperLeadingEdgeOperators::kernel of line/paper_leading_edge.hpp
 //    over short and long contacts, l / a0 = 3, 30, 1000, and, for the extended operator and (L2),
 //    the kernel scale x (or V tau) / a0 = 0.01, 1, 100 (its panels are graded down to x).
 #include <benchmark/benchmark.h>
 
 #include <string>
 #include <viscoroll/line/line_operators.hpp>
+#include <viscoroll/line/paper_leading_edge.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/line_kernels.hpp>
 
@@ -55,6 +58,7 @@ void BM_line_operator(benchmark::State& state) {
   const Real l = Real(contact_half_lengths[state.range(0)]);
   const Real x = Real(kernel_scales[state.range(1)]);
   const viscoroll::LineOperators<Real, viscoroll::GaussLegendre<Real, 12>> ops(l);
+  const viscoroll::PaperLeadingEdgeOperators<Real, viscoroll::GaussLegendre<Real, 12>> paper(l);
   const auto F = [l](Real y) { return (1 - (y / l) * (y / l)) / 4; };
   Real y = l / 3;
   const auto evaluate = [&] {
@@ -62,7 +66,7 @@ void BM_line_operator(benchmark::State& state) {
     if constexpr (Op == Operator::near_field) return ops.near_field(F, y);
     if constexpr (Op == Operator::extended) return ops.extended(F, x, y);
     if constexpr (Op == Operator::extended_dx) return ops.extended_dx(F, x, y);
-    if constexpr (Op == Operator::leading_edge) return ops.leading_edge_kernel(F, x, y);
+    if constexpr (Op == Operator::leading_edge) return paper.kernel(F, x, y);
   };
   Real value = evaluate();  // builds the rules once
   for (auto _ : state) {

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <limits>
 #include <viscoroll/line/line_operators.hpp>
+#include <viscoroll/line/paper_leading_edge.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
@@ -122,6 +123,7 @@ template <class Real, class Rule>
 Residuals<Real> residuals(const Contact<Real>& c, Real y, bool with_quadrature) {
   using std::exp;
   const LineOperators<Real, Rule> ops(c.l);
+  const viscoroll::PaperLeadingEdgeOperators<Real, Rule> paper(c.l);
   const Real V = c.vtau, a = c.a(y), b = c.b(y), g = c.g(y), x0 = a + b;
   const auto f0 = [&](Real t) { return c.template moment<Rule>(t, 0); };
   const auto f1 = [&](Real t) { return c.template moment<Rule>(t, 1); };
@@ -140,8 +142,8 @@ Residuals<Real> residuals(const Contact<Real>& c, Real y, bool with_quadrature) 
 
   // (44)
   const Real lhs44 = viscoroll::leading_edge_bessel_term(c.c1, a, b, g, V);
-  r.eq44_l2 = lhs44 - ops.leading_edge_kernel(q, V, y);
-  r.eq44_lit = lhs44 - ops.leading_edge_literal(q, V, y);
+  r.eq44_l2 = lhs44 - paper.kernel(q, V, y);
+  r.eq44_lit = lhs44 - paper.literal(q, V, y);
   r.scale = std::abs(lambda_q) + 2 * std::abs(q(y)) * (1 + std::abs(std::log(V)));
   const auto small = [&](Real eta) { return exp(-eta / V) * (ops.extended(q, eta, y) - lambda_q); };
   r.delta = -graded_integral<Rule>(small, x0, x0, 8) / V +

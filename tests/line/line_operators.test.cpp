@@ -1,7 +1,8 @@
 // Tests of viscoroll/line/line_operators.hpp: the finite part, the near-field operator (24)/(34),
-// the extended operator (41) and its x-derivative, both forms of the right side of (44), and the
-// Bessel term of (42)/(44). Truth: closed forms derived below, identities of the paper, and
-// mpmath references (script in docs/line-operators.md).
+// the extended operator (41) and its x-derivative, on LineOperators' panels and on the line
+// residual's node set (LineNodeRule); and of viscoroll/line/paper_leading_edge.hpp: both forms of
+// the right side of (44), and the Bessel term of (42)/(44). Truth: closed forms derived below,
+// identities of the paper, and mpmath references (script in docs/line-operators.md).
 #include <boost/math/special_functions/bessel.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,12 +11,15 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
+#include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_operators.hpp>
+#include <viscoroll/line/paper_leading_edge.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
 namespace {
 
 using viscoroll::LineOperators;
+using viscoroll::PaperLeadingEdgeOperators;
 
 template <class Real>
 Real parse(const char* s) {
@@ -256,16 +260,48 @@ TEMPLATE_TEST_CASE("line: extended operator (41) and its x-derivative", "[line]"
   }
 }
 
+TEMPLATE_TEST_CASE("line: the operators on the line residual's node set", "[line]", double,
+                   long double) {
+  // The node-set operators that LineOperators applies on its panels, here on the nodes
+  // LineResidual integrates with (LineNodeRule, docs/theory.md section 7: equal panels in
+  // ln(s/(len - s)) after a first panel on the scale x0, with x0 = x), against the mpmath values of
+  // I and dI/dx above with the same tolerances, and the finite part against its closed form
+  // (Q = 1 - 2y^2/3 - y^4/3) within 4 eps times its condition sum_j w_j / s_j times
+  // sup|Q| + sup|Q'| (the rounding of Q(y') - Q(y) and of y'). l = 1, N = 4, V tau = 1, f = 9.
+  using Real = TestType;
+  using Rule = viscoroll::GaussLegendre<Real, 12>;
+  const viscoroll::LineNodeRule<Real, Rule> rule(viscoroll::LineBasis::t_squared, Real(0), 4,
+                                                 Real(1), Real(9));
+  const viscoroll::LineShape<Real> shape{Real(1), Real(1), {Real(0)}, {Real(0)}};
+  for (const auto& r : extended_refs) {
+    const Real x = parse<Real>(r.x), y = parse<Real>(r.y);
+    viscoroll::LineNodes<Real> nd;
+    rule.point(shape, y, x, nd);
+    const Real qy = q_profile(y);
+    const auto dq = LineOperators<Real, Rule>::differences(nd, q_profile<Real>, qy);
+    INFO("x = " << r.x << ", y = " << r.y);
+    const Real condition = 24 + 2 * std::abs(std::log(x));
+    const Real condition_dx = condition + Real(8) / 3 / x;
+    CHECK(std::abs(extended(nd, dq, qy, x) - parse<Real>(r.value)) <= 8 * eps<Real>() * condition);
+    CHECK(std::abs(extended_dx(nd, dq, qy, x) - parse<Real>(r.derivative)) <=
+          8 * eps<Real>() * condition_dx);
+    Real fp_condition = 0;
+    for (std::size_t j = 0; j < nd.dist.size(); ++j) fp_condition += nd.weight[j] / nd.dist[j];
+    const Real exact = -2 * monomial_fp(2, Real(1), y) / 3 - monomial_fp(4, Real(1), y) / 3;
+    CHECK(std::abs(finite_part(nd, dq) - exact) <= 4 * eps<Real>() * fp_condition * (1 + Real(8) / 3));
+  }
+}
+
 TEMPLATE_TEST_CASE("line: right side of (44), form (L2) against the literal form and mpmath",
                    "[line]", double, long double) {
   using Real = TestType;
-  using Ops = LineOperators<Real, viscoroll::GaussLegendre<Real, 16>>;
-  const Ops ops(Real(1));
+  const PaperLeadingEdgeOperators<Real, viscoroll::GaussLegendre<Real, 16>> paper(Real(1));
+  const auto& ops = paper.operators();
   SECTION("(L2) = literal (44) where (44) does not cancel, V/l = 0.1, 1, 10") {
     for (Real vtau : {Real(0.1), Real(1), Real(10)}) {
       for (Real y : {Real(0), Real(0.37), Real(-0.9)}) {
-        const Real l2 = ops.leading_edge_kernel(q_profile<Real>, vtau, y);
-        const Real literal = ops.leading_edge_literal(q_profile<Real>, vtau, y);
+        const Real l2 = paper.kernel(q_profile<Real>, vtau, y);
+        const Real literal = paper.literal(q_profile<Real>, vtau, y);
         // The literal form's terms are O(|Q| (1 + |ln V|)) and cancel to |R|: rounding
         // ~ eps * 64 * (1 + |ln V|) (condition of the finite part and of the graded log integral).
         CHECK(std::abs(l2 - literal) <= 64 * eps<Real>() * (1 + std::abs(std::log(vtau))));
@@ -276,7 +312,7 @@ TEMPLATE_TEST_CASE("line: right side of (44), form (L2) against the literal form
     for (const auto& r : kernel_refs) {
       const Real vtau = parse<Real>(r.vtau), y = parse<Real>(r.y);
       const Real ref = parse<Real>(r.value);
-      const Real l2 = ops.leading_edge_kernel(q_profile<Real>, vtau, y);
+      const Real l2 = paper.kernel(q_profile<Real>, vtau, y);
       // (L2) has no cancellation: rounding ~ eps (condition 24 of the difference quotients plus
       // the psi end terms, O(|Q| |ln V|)).
       // (L2) has no cancellation: rounding of Q(y') - Q(y) ~ eps sup|Q| / s against the kernel
@@ -292,8 +328,8 @@ TEMPLATE_TEST_CASE("line: right side of (44), form (L2) against the literal form
     const Real limit = ops.near_field(q_profile<Real>, y) +
                        2 * q_profile(y) * (boost::math::constants::euler<Real>() - std::log(vtau));
     // -(pi/(2V)) int Q [H0 - Y0] ~ -(1/V) int Q (ln(2V/|s|) - gamma) = O(ln(V)/V): 1e-3 here.
-    const Real l2 = ops.leading_edge_kernel(q_profile<Real>, vtau, y);
-    const Real literal = ops.leading_edge_literal(q_profile<Real>, vtau, y);
+    const Real l2 = paper.kernel(q_profile<Real>, vtau, y);
+    const Real literal = paper.literal(q_profile<Real>, vtau, y);
     CHECK(std::abs(l2 - limit) <= 4 * std::log(vtau) / vtau);
     CHECK(std::abs(l2 - literal) <= 64 * eps<Real>() * (1 + std::abs(std::log(vtau))));
   }
@@ -342,5 +378,6 @@ TEST_CASE("line: operators reject arguments outside their domain", "[line]") {
   const auto one = [](double) { return 1.0; };
   CHECK_THROWS_AS(ops.finite_part(one, 1.0), std::invalid_argument);
   CHECK_THROWS_AS(ops.extended(one, 0.0, 0.0), std::invalid_argument);
-  CHECK_THROWS_AS(ops.leading_edge_kernel(one, -1.0, 0.0), std::invalid_argument);
+  const PaperLeadingEdgeOperators<double, viscoroll::GaussLegendre<double, 16>> paper(1.0);
+  CHECK_THROWS_AS(paper.kernel(one, -1.0, 0.0), std::invalid_argument);
 }

@@ -2,53 +2,36 @@
 //
 // Panek & Kalker (1980), Sections 5 and 7. The unknowns are the coefficients of a(y) and b(y)
 // (line_shape.hpp), ln l and d; the equations, at collocation points y_i = l t_i, are
-//   (34)  FP[F0](y) + F0(y) ln[16 (l^2 - y^2)/a^2] + C1 a^2/4 + (C1/2) b (b - 2 V) + C2 y^2/2 - d =
-//   0 (LE)  the leading-edge condition, in the form (L6) of docs/theory.md section 4 (default) or
-//   as
-//         the paper's (44) (LeadingEdgeForm::paper, for comparison only: its small-argument step is
-//         exponentially amplified when V tau << a, docs/theory.md section 4)
+//   (34)  FP[F0](y) + F0(y) ln[16 (l^2 - y^2)/a^2]
+//           + C1 a^2/4 + (C1/2) b (b - 2 V) + C2 y^2/2 - d = 0
+//   (LE)  the leading-edge condition C1 {a b e^z K1(z) - G e^z K0(z)} = right side, z = a/V,
+//         Eq. (42) with the right side of a LeadingEdgeCondition policy: by default (L6) of
+//         docs/theory.md section 4,
+//           (Lambda - I_x0)[Q](y) - V int_0^inf e^-t d/dx I[Q, x0 + V t](y) dt
+//         (exterior_right of line_operators.hpp); the paper's (44) in paper_leading_edge.hpp
 //   (47)  int F0 dy = C1 a0^2 l0 / 3 = (1 + f) c P
-// with G (36), F0 (33), Q (46) pointwise, V = V tau. (L6) reads
-//   C1 {a b e^z K1(z) - G e^z K0(z)} = (Lambda - I_x0)[Q](y) - V int_0^inf e^-t d/dx I[Q, x0 + V
-//   t](y) dt,
-// z = a/V, x0 = a + b, Lambda the near-field operator (24), I the extended operator (41). Both
-// integral terms are sums over one set of nodes y' = y +- s per collocation point:
-//   (Lambda - I_x)[Q] = int (Q(y') - Q(y)) x^2 / (s h (s + h)) dy'
-//                       - Q(y) sum_{d = l -+ y} log1p(x^2 / (2 d (h_d + d))),       h = sqrt(x^2 +
-//                       s^2),
-//   V int e^-t dI/dx dt = int (Q(y') - Q(y)) K(s) dy' + Q(y) V int e^-t x_t sum_d 1/(h_d (h_d + d))
-//   dt, K(s) = -V int_0^inf e^-t x_t (x_t^2 + s^2)^(-3/2) dt,  x_t = x0 + V t,
-// every kernel positive or of one sign, so no term is a difference of large numbers.
-// Nodes (docs/theory.md section 7): in s, equal panels in ln(s/(len - s)) between a first panel
-// on the kernels' scale x0 and a last one on the scale of the nearest pole of G beyond the end
-// (where I0(alpha) = 0, just beyond +-l when a0/V tau is large, docs/line-operators.md); in t,
-// equal panels in ln(1 + t/c), c = min(x0/V, 1), up to -ln(eps) + 8. The panels' width follows
-// from the distance of the singularities in these variables (pi/2) and the rule's order, so that
-// every integral is exact to rounding. Far from the point (s beyond ~2.4 (x0 + V) when V << x0),
-// K(s) is a series in 1/s^2 with the t-integral done once per point (docs/theory.md section 8).
+// with G (36), F0 (33), Q (46) pointwise, V = V tau, x0 = a + b, Lambda the near-field operator
+// (24), I the extended operator (41). Every integral at a point is a sum over one node set
+// (LineNodeRule, docs/theory.md section 7) of the differences F(y') - F(y), taken by the
+// operators of line_operators.hpp: near_field_strip for (34), exterior_right for (L6).
 #pragma once
 
 #include <Eigen/Core>
-#include <algorithm>
+#include <boost/math/constants/constants.hpp>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/strip_pressure.hpp>
 #include <viscoroll/core/validate.hpp>
-#include <viscoroll/line/detail/graded_panels.hpp>
-#include <viscoroll/line/detail/memory_kernel_series.hpp>
+#include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
-
-/// Which leading-edge condition closes the line equations.
-enum class LeadingEdgeForm {
-  exterior,  ///< (L6), docs/theory.md section 4: (42) with only I[F1, x0] -> Lambda[F1]
-  paper,     ///< the paper's (44) (with [gamma - ln V tau]), in the form (L2), times e^{x0/V}
-};
 
 /// The scene's constants seen by the residual (V tau > 0, f > 0).
 template <RealScalar Real>
@@ -59,9 +42,36 @@ struct LineProblem {
   Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52)
 };
 
-/// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule.
-template <RealScalar Real, class Quadrature>
-requires NodalQuadratureRule<Quadrature, Real>
+/// Leading-edge policy of LineResidual: the right side of the leading-edge condition in the
+/// scaling of Eq. (42), C1 e^z {a b K1(z) - G K0(z)} = right side.
+///
+/// A policy E provides `static Real E::right<Quadrature>(problem, shape, y, x0, nodes, dq, q)`:
+/// the right side at y (|y| < shape.l) with leading edge x0 = a(y) + b(y) > 0, from the residual's
+/// node set there (LineNodeRule) and dq_j = Q(y'_j) - Q(y), q = Q(y), Q of Eq. (46). Models:
+/// ExteriorLeadingEdge, (L6) (the default, and the one LineResidual::jacobian differentiates);
+/// PaperLeadingEdge in paper_leading_edge.hpp, the paper's (44).
+template <class E, class Real, class Quadrature>
+concept LeadingEdgeCondition = requires(const LineProblem<Real>& p, const LineShape<Real>& s,
+                                        const LineNodes<Real>& nd, const std::vector<Real>& dq,
+                                        Real y) {
+  { E::template right<Quadrature>(p, s, y, y, nd, dq, y) } -> std::convertible_to<Real>;
+};
+
+/// The leading-edge condition (L6) of docs/theory.md section 4: (42) with only the second of the
+/// paper's two small-argument steps, I[F1, x0] -> Lambda[F1] (exterior_right).
+struct ExteriorLeadingEdge {
+  template <class Quadrature, class Real>
+  static Real right(const LineProblem<Real>& p, const LineShape<Real>&, Real, Real x0,
+                    const LineNodes<Real>& nd, const std::vector<Real>& dq, Real q) {
+    return exterior_right(nd, dq, q, x0, p.vtau);
+  }
+};
+
+/// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,
+/// `LeadingEdge` a LeadingEdgeCondition.
+template <RealScalar Real, class Quadrature, class LeadingEdge = ExteriorLeadingEdge>
+requires NodalQuadratureRule<Quadrature, Real> &&
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature>
 class LineResidual {
  public:
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
@@ -72,17 +82,16 @@ class LineResidual {
   /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b.
   /// oversampling k >= 1: k (N + 1) points instead, an overdetermined system whose least-squares
   /// solution is the paper's (Section 7; docs/theory.md section 10).
-  LineResidual(LineProblem<Real> problem, int terms,
-               LeadingEdgeForm form = LeadingEdgeForm::exterior,
-               LineBasis basis = LineBasis::t_squared, int oversampling = 1)
+  LineResidual(LineProblem<Real> problem, int terms, LineBasis basis = LineBasis::t_squared,
+               int oversampling = 1)
       : p_(problem),
         n_(terms),
         oversampling_(oversampling),
-        form_(form),
         basis_(basis),
         scale_(basis == LineBasis::s_mapped
                    ? LineShape<Real>::mapped_scale(problem.vtau, problem.f, problem.a_ref)
-                   : Real(0)) {
+                   : Real(0)),
+        rule_(basis_, scale_, terms, problem.vtau, problem.f) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,
                     "1 <= oversampling <= 8");
@@ -95,8 +104,6 @@ class LineResidual {
       const Real v = cos(pi * Real(2 * i - 1) / Real(2 * m));
       t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, scale_, v)));
     }
-    using std::log;
-    t_max_ = -log(std::numeric_limits<Real>::epsilon()) + 8;
   }
 
   int terms() const { return n_; }
@@ -144,7 +151,7 @@ class LineResidual {
   /// int_{-l}^{l} F0 dy (Eq. 47).
   Real load(const LineShape<Real>& s) const {
     std::vector<Real> nodes, weights;
-    load_nodes(s, nodes, weights);
+    rule_.load(s, nodes, weights);
     Real sum = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j)
       sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
@@ -156,17 +163,16 @@ class LineResidual {
     const Real c1 = p_.c1;
     const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
     if (!(here.a > 0) || !(here.a + here.b > 0)) return false;
-    PointNodes nd;
-    point_nodes(s, y, here.a + here.b, nd);
+    LineNodes<Real> nd;
+    rule_.point(s, y, here.a + here.b, nd);
     std::vector<Real> df0(nd.yp.size()), dq(nd.yp.size());
     for (std::size_t j = 0; j < nd.yp.size(); ++j) {
       const auto there = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), p_.vtau, p_.f);
       df0[j] = there.f0 - here.f0;
       dq[j] = there.q - here.q;
     }
-    const Real right = form_ == LeadingEdgeForm::exterior
-                           ? exterior_right(nd, dq, here.q, here.a + here.b)
-                           : paper_right(s, y, here.a + here.b);
+    const Real right =
+        LeadingEdge::template right<Quadrature>(p_, s, y, here.a + here.b, nd, dq, here.q);
     point_rows(d, y, here, nd, df0, right, r34, rle);
     return true;
   }
@@ -176,201 +182,12 @@ class LineResidual {
   /// (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
   /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), at nodes
   /// held fixed in t = y/l; the kernels' dependence on the leading edge x0 = a + b and on l is
-  /// differentiated in the same pass as the kernels (exterior_right's KernelSlopes). Exterior form
-  /// (L6) only; returns false where operator() would, or for the paper's form.
-  bool jacobian(const Vector& x, Vector& r, Matrix& jac) const;
+  /// differentiated in the same pass as the kernels (exterior_right's ExteriorSlopes). For the
+  /// (L6) form only; returns false where operator() would.
+  bool jacobian(const Vector& x, Vector& r,
+                Matrix& jac) const requires std::same_as<LeadingEdge, ExteriorLeadingEdge>;
 
  private:
-  /// The nodes of one collocation point: y' = y +- s on both sides (panels doubling from x0/2 and
-  /// halving toward the ends), and the t-nodes of the eta-integral of (L6).
-  struct PointNodes {
-    std::vector<Real> yp, dist, weight;  ///< node y', |y' - y| and weight, both sides
-    std::vector<Real> tn, tw;            ///< t-nodes on [0, -ln eps + 8] and weights (no e^-t)
-    Real d1 = 0, d2 = 0;                 ///< l - y, l + y
-  };
-
-  void point_nodes(const LineShape<Real>& s, Real y, Real x0, PointNodes& nd) const {
-    nd.d1 = s.l - y;
-    nd.d2 = s.l + y;
-    const Real c = std::min(Real(x0 / p_.vtau), Real(1));
-    detail::append_log_mapped_nodes<Quadrature>(nd.tn, nd.tw, t_max_, c,
-                                                boost::math::constants::half_pi<Real>());
-    std::vector<Real> sn, sw;
-    for (int side = 0; side < 2; ++side) {
-      const Real len = side == 0 ? nd.d1 : nd.d2;
-      sn.clear();
-      sw.clear();
-      append_side_nodes(s, len, side == 0 ? nd.d2 : nd.d1, x0, sn, sw);
-      for (std::size_t j = 0; j < sn.size(); ++j) {
-        const Real yp = side == 0 ? Real(y + sn[j]) : Real(y - sn[j]);
-        const Real dist = side == 0 ? Real(yp - y) : Real(y - yp);  // recomputed: rounding of yp
-        if (!(dist > 0)) continue;
-        nd.yp.push_back(yp);
-        nd.dist.push_back(dist);
-        nd.weight.push_back(sw[j]);
-      }
-    }
-  }
-
-  /// The nodes of one side's integrals over s in [0, len], y' = y +- s (docs/theory.md section 7).
-  /// Equal panels in w = ln(s/(len - s)), which puts every singular point of the integrands at
-  /// |Im w| >= pi/2 (and all but s = +-i x_t at |Im w| = pi), between two end panels:
-  /// - [0, first] keeps off the kernels' singularities at s = +-i x_t (x_t >= x0) and the nearest
-  ///   singular point behind s = 0 (the other end of the contact at s = -other, a branch point of
-  ///   a(y) in the variable sqrt(1 - t^2); else the poles of G beyond it);
-  /// - [len - last, len], in the variable tau = sqrt((len - s)/last) (a branch point at the end is
-  ///   regular in tau), is a fifth of the distance to s = 0, a quarter of the distance of the poles
-  ///   of G beyond the end (end_width), and of the scale on which the Chebyshev series of a(y),
-  ///   b(y) vary at the end: l/(2N) in t^2, l/(2N^2) in sqrt(1 - t^2) (where u + 1 grows as
-  ///   sqrt(l - y));
-  /// - the equal panels are no wider than 8/N in w, for the same series.
-  void append_side_nodes(const LineShape<Real>& s, Real len, Real other, Real x0,
-                         std::vector<Real>& sn, std::vector<Real>& sw) const {
-    const Real behind =
-        basis_ == LineBasis::t_squared ? Real(other + pole_distance(s)) : Real(other);
-    const Real first = std::min({Real(x0 / 2), Real(len / 4), behind});
-    const Real series = series_scale(s);
-    const Real last = std::min({end_width(s, len), Real(len / 5), series});
-    detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_);
-  }
-
-  /// The distance from an end over which the Chebyshev series of a(y), b(y) vary: where the
-  /// expansion variable is 2/N from -1. In t^2, l/(2N); in s = sqrt(1 - t^2), l s^2/2 at s = 1/N;
-  /// in the mapped s, at s = e sinh(asinh(1/e)/N), and no more than a quarter of the distance of
-  /// the map's branch points s = +-i e (1 - t^2 = -e^2, l e^2/2 beyond the end).
-  Real series_scale(const LineShape<Real>& s) const {
-    switch (basis_) {
-      case LineBasis::t_squared:
-        return s.l / (2 * n_);
-      case LineBasis::s:
-        return s.l / (2 * n_ * n_);
-      default: {
-        if (LineShape<Real>::mapped_is_identity(scale_)) return s.l / (2 * n_ * n_);
-        const Real sn = LineShape<Real>::mapped_s(scale_, Real(1) / n_);
-        return std::min(Real(s.l * sn * sn / 2), Real(s.l * scale_ * scale_ / 8));
-      }
-    }
-  }
-
-  /// The derivatives of exterior_right in x0 and in ln l (every distance along y stretched by
-  /// lambda, nodes fixed in t), at fixed dq and q (docs/theory.md section 6).
-  struct KernelSlopes {
-    Real x0 = 0, l = 0;
-  };
-
-  /// (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt, (L6), from dq_j = Q(y'_j) - Q(y) and
-  /// q = Q(y). Optionally the weight of each dq_j, the factor of q, and the derivatives in x0 and
-  /// ln l (the Jacobian's; in the same pass, docs/theory.md section 6).
-  Real exterior_right(const PointNodes& nd, const std::vector<Real>& dq, Real q, Real x0,
-                      std::vector<Real>* wq = nullptr, Real* ends = nullptr,
-                      KernelSlopes* slopes = nullptr) const {
-    using std::exp;
-    using std::hypot;
-    using std::log1p;
-    using std::sqrt;
-    const Real v = p_.vtau;
-    const std::size_t nt = nd.tn.size();
-    // wk: the t-weights W_k with e^-t and V; wtu2 (W u^2) only for the slopes.
-    Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(nt);
-    std::vector<Real> xk(nt);
-    for (std::size_t k = 0; k < nt; ++k) {
-      xk[k] = x0 + v * nd.tn[k];
-      wk[k] = v * nd.tw[k] * exp(-nd.tn[k]);
-      // In units of x0 (u = x_t/x0 >= 1, sigma = s/x0): K(s) x0^2 = -sum w u (u^2 +
-      // sigma^2)^(-3/2), a square root per node instead of hypot (3x dearer), free of overflow
-      // while s/x0 < 1e150.
-      const Real u = xk[k] / x0;
-      uk2[k] = u * u;
-      wu[k] = wk[k] * u;
-      if (slopes != nullptr) wtu2[k] = wk[k] * u * u;
-    }
-    // s-nodes beyond far.threshold() (~2.4 (x0 + V) when V << x0) take the series in 1/s^2
-    // instead of the t-nodes.
-    const detail::MemoryKernelSeries<Real> far(x0, v);
-    Real s1 = 0, s2 = 0, s_x0 = 0, s_l = 0;
-    for (std::size_t j = 0; j < nd.dist.size(); ++j) {
-      const Real w = nd.weight[j];
-      const Real sigma = nd.dist[j] / x0, sigma2 = sigma * sigma;
-      const Real hu = sqrt(1 + sigma2);                      // h / x0
-      const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // x0^2/(s h (s + h)) = 1/s - 1/h
-      // k2 and, for the slopes, dk2/dx0 and dk2/dln l.
-      Real k2, k2_x0 = 0, k2_l = 0;
-      if (nd.dist[j] >= far.threshold()) {
-        // Far from the point: the series in 1/s^2 (docs/theory.md section 8), within eps/16.
-        if (slopes == nullptr) {
-          k2 = -w * far.value(nd.dist[j]);
-        } else {
-          Real kf = 0, kf_x0 = 0, kf_s = 0;
-          far.evaluate(nd.dist[j], kf, kf_x0, kf_s);
-          k2 = -w * kf;
-          k2_x0 = -w * kf_x0;
-          k2_l = k2 - w * kf_s;
-        }
-      } else {
-        // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed divisions and
-        // square roots, a tree-ordered sum; the same operations with and without the slopes, so
-        // that the Jacobian's residual is operator()'s bit for bit.
-        p2 = (uk2 + sigma2).inverse();
-        k2 = -w * (wu * (p2 * p2.sqrt())).sum() / (x0 * x0);
-        if (slopes != nullptr) {
-          // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
-          // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2.
-          const Eigen::Array<Real, Eigen::Dynamic, 1> p5 = p2 * p2 * p2.sqrt();
-          k2_x0 = -w * (sigma2 * (wk * p5).sum() - 2 * (wtu2 * p5).sum()) / (x0 * x0 * x0);
-          k2_l = k2 + 3 * w * sigma2 * (wu * p5).sum() / (x0 * x0);
-        }
-      }
-      if (slopes != nullptr) {
-        // dk1/dx0 = w x0/h^3, dk1/dln l = -w x0^2/h^3.
-        const Real hu3 = hu * hu * hu;
-        s_x0 += (w / (x0 * x0 * hu3) - k2_x0) * dq[j];
-        s_l += (-w / (x0 * hu3) - k2_l) * dq[j];
-      }
-      s1 += k1 * dq[j];
-      s2 += k2 * dq[j];
-      if (wq != nullptr) (*wq)[j] = k1 - k2;
-    }
-    const Real d1 = nd.d1, d2 = nd.d2;
-    const Real h1 = hypot(x0, d1), h2 = hypot(x0, d2);
-    // log1p(x0^2/(2 d (h + d))) = ln((h + d)/(2 d)).
-    const Real ends_l =
-        -(log1p(x0 * x0 / (2 * d1 * (h1 + d1))) + log1p(x0 * x0 / (2 * d2 * (h2 + d2))));
-    Real ends_2 = 0, ends_2_x0 = 0, ends_2_l = 0;
-    for (std::size_t k = 0; k < nt; ++k) {
-      const Real g1 = hypot(xk[k], d1), g2 = hypot(xk[k], d2);
-      const Real a1 = 1 / (g1 * (g1 + d1)), a2 = 1 / (g2 * (g2 + d2));
-      ends_2 += wk[k] * xk[k] * (a1 + a2);
-      if (slopes != nullptr) {
-        // phi = x A, A = 1/(g (g + d)), g = hypot(x, d): dphi/dx = A - x^2 (2 g + d) A^2 / g,
-        // dphi/dln l = d dphi/dd = -x d / g^3.
-        const Real x2 = xk[k] * xk[k];
-        ends_2_x0 += wk[k] * (a1 - x2 * (2 * g1 + d1) * a1 * a1 / g1 + a2 -
-                              x2 * (2 * g2 + d2) * a2 * a2 / g2);
-        ends_2_l -= wk[k] * xk[k] * (d1 / (g1 * g1 * g1) + d2 / (g2 * g2 * g2));
-      }
-    }
-    if (ends != nullptr) *ends = ends_l - ends_2;
-    if (slopes != nullptr) {
-      // d ln((h + d)/(2 d))/dx0 = x0/(h (h + d)); its derivative in ln l is -x0^2/(h (h + d)).
-      const Real e1 = x0 / (h1 * (h1 + d1)), e2 = x0 / (h2 * (h2 + d2));
-      slopes->x0 = s_x0 + q * (-(e1 + e2) - ends_2_x0);
-      slopes->l = s_l + q * (x0 * (e1 + e2) - ends_2_l);
-    }
-    // (L6): (Lambda - I_x0)[Q] - V int e^-t dI/dx[Q, x0 + V t] dt
-    return (s1 + q * ends_l) - (s2 + q * ends_2);
-  }
-
-  /// The right side of the paper's (44) in the form (L2), multiplied by e^{(a + b)/V} to the
-  /// scaling of (42).
-  Real paper_right(const LineShape<Real>& s, Real y, Real x0) const {
-    using std::exp;
-    LineOperators<Real, Quadrature> ops(s.l);
-    const auto q = [&](Real yp) {
-      return strip_functions(p_.c1, s.a(yp), s.b(yp), p_.vtau, p_.f).q;
-    };
-    return exp(x0 / p_.vtau) * ops.leading_edge_kernel(q, p_.vtau, y);
-  }
-
   /// e^z K0(z), e^z K1(z) at z = a/V and the leading-edge row's scale C1 a (e^z K1 + r_i e^z K0),
   /// its slope in b at fixed a.
   struct EdgeTerms {
@@ -379,14 +196,11 @@ class LineResidual {
 
   /// (34) and the leading-edge row at one point from the finite-part differences df0_j and the
   /// right side of the leading-edge condition; returns the terms of the row's left side.
-  EdgeTerms point_rows(Real d, Real y, const StripFunctions<Real>& here, const PointNodes& nd,
+  EdgeTerms point_rows(Real d, Real y, const StripFunctions<Real>& here, const LineNodes<Real>& nd,
                        const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const {
-    using std::log;
     const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
-    Real fp = 0;
-    for (std::size_t j = 0; j < df0.size(); ++j) fp += nd.weight[j] * df0[j] / nd.dist[j];
     // (34), scaled by C1 a_ref^2.
-    const Real lhs34 = fp + here.f0 * (log(4 * nd.d1 / a) + log(4 * nd.d2 / a));
+    const Real lhs34 = near_field_strip(nd, df0, here.f0, a);
     const Real rhs34 = -c1 * a * a / 4 - c1 * b * (b - 2 * v) / 2 - p_.c2 * y * y / 2 + d;
     r34 = (lhs34 - rhs34) / (c1 * p_.a_ref * p_.a_ref);
     // Leading-edge condition.
@@ -448,40 +262,20 @@ class LineResidual {
     }
   }
 
-  /// The nodes and weights of the load integral (47) on [0, l]: a side's nodes from y = 0, with
-  /// the other end at distance l and no kernel (its scale taken as l, so the first panel is l/4).
-  void load_nodes(const LineShape<Real>& s, std::vector<Real>& nodes,
-                  std::vector<Real>& weights) const {
-    append_side_nodes(s, s.l, s.l, s.l, nodes, weights);
-  }
-
-  /// The distance of the nearest pole of G beyond y = +-l, where (1 + f) a(y) / V tau = +- i
-  /// j_{0,1} (a^2 < 0 just past the end).
-  Real pole_distance(const LineShape<Real>& s) const {
-    const Real j01 = Real(2.404825557695772768621631879326454643124L);
-    const Real a_end = s.a_ref * s.end_factor();
-    const Real cc = j01 * p_.vtau / ((1 + p_.f) * a_end);
-    return s.l * cc * cc / 2;  // 1 - t^2 = -cc^2 at t = 1 + cc^2/2
-  }
-
-  /// The last panel toward the end of a side of length len: a quarter of pole_distance.
-  Real end_width(const LineShape<Real>& s, Real len) const {
-    return std::max(Real(pole_distance(s) / 4), Real(len * std::numeric_limits<Real>::epsilon()));
-  }
-
   LineProblem<Real> p_;
   int n_;
   int oversampling_;
-  LeadingEdgeForm form_;
   LineBasis basis_;
   Real scale_;  ///< e of LineBasis::s_mapped, else 0
+  LineNodeRule<Real, Quadrature> rule_;
   std::vector<Real> t_;
-  Real t_max_;
 };
 
-template <RealScalar Real, class Quadrature>
-requires NodalQuadratureRule<Quadrature, Real>
-auto LineResidual<Real, Quadrature>::operator()(const Vector& x, Vector& r) const -> bool {
+template <RealScalar Real, class Quadrature, class LeadingEdge>
+requires NodalQuadratureRule<Quadrature, Real> &&
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature>
+auto LineResidual<Real, Quadrature, LeadingEdge>::operator()(const Vector& x, Vector& r) const
+    -> bool {
   r.resize(equations());
   const LineShape<Real> s = shape(x);
   const Real d = penetration(x);
@@ -502,12 +296,13 @@ auto LineResidual<Real, Quadrature>::operator()(const Vector& x, Vector& r) cons
   return true;
 }
 
-template <RealScalar Real, class Quadrature>
-requires NodalQuadratureRule<Quadrature, Real>
-auto LineResidual<Real, Quadrature>::jacobian(const Vector& x, Vector& r, Matrix& jac) const
-    -> bool {
+template <RealScalar Real, class Quadrature, class LeadingEdge>
+requires NodalQuadratureRule<Quadrature, Real> &&
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature>
+auto LineResidual<Real, Quadrature, LeadingEdge>::jacobian(const Vector& x, Vector& r,
+                                                           Matrix& jac) const
+    -> bool requires std::same_as<LeadingEdge, ExteriorLeadingEdge> {
   using std::log;
-  if (form_ != LeadingEdgeForm::exterior) return false;
   const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
   r.resize(equations());
   jac.setZero(equations(), nu);
@@ -524,10 +319,10 @@ auto LineResidual<Real, Quadrature>::jacobian(const Vector& x, Vector& r, Matrix
     shape_gradient(s, y, a, da_i, db_i);
     df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
     dq_i = dh.q_a * da_i + dh.q_b * db_i;
-    PointNodes nd;
-    point_nodes(s, y, x0, nd);
+    LineNodes<Real> nd;
+    rule_.point(s, y, x0, nd);
     const std::size_t count = nd.yp.size();
-    std::vector<Real> df0(count), dq(count), wq(count);
+    std::vector<Real> df0(count), dq(count);
     dlhs.setZero();
     dright.setZero();
     Vector dan(nu), dbn(nu);
@@ -537,9 +332,8 @@ auto LineResidual<Real, Quadrature>::jacobian(const Vector& x, Vector& r, Matrix
       df0[j] = dn[j].value.f0 - here.f0;
       dq[j] = dn[j].value.q - here.q;
     }
-    Real ends = 0;
-    KernelSlopes slopes;
-    const Real right = exterior_right(nd, dq, here.q, x0, &wq, &ends, &slopes);
+    ExteriorSlopes<Real> slopes;
+    const Real right = exterior_right(nd, dq, here.q, x0, v, &slopes);
     Real r34 = 0, rle = 0;
     const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
     r[i] = r34 + v / p_.a_ref * rle;
@@ -547,19 +341,19 @@ auto LineResidual<Real, Quadrature>::jacobian(const Vector& x, Vector& r, Matrix
     // Node values: d F(y'_j) at fixed t'_j; the differences' second terms via the weight sums.
     Real w0sum = 0, wqsum = 0;
     for (std::size_t j = 0; j < count; ++j) {
-      const Real w0 = nd.weight[j] / nd.dist[j];
+      const Real w0 = finite_part_weight(nd, j);
       w0sum += w0;
-      wqsum += wq[j];
+      wqsum += slopes.weight[j];
       const auto& dj = dn[j];
       if (!(dj.value.a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
       shape_gradient(s, nd.yp[j], dj.value.a, dan, dbn);
       dnode = dj.f0_a * dan + dj.f0_b * dbn;
       dlhs += w0 * dnode;
       dnode = dj.q_a * dan + dj.q_b * dbn;
-      dright += wq[j] * dnode;
+      dright += slopes.weight[j] * dnode;
     }
     dlhs -= w0sum * df0_i;
-    dright += (ends - wqsum) * dq_i;
+    dright += (slopes.ends - wqsum) * dq_i;
     // The kernels' dependence on x0 and on l (nodes fixed in t).
     dright += slopes.x0 * (da_i + db_i);
     dright[lam] += slopes.l;
@@ -586,7 +380,7 @@ auto LineResidual<Real, Quadrature>::jacobian(const Vector& x, Vector& r, Matrix
   }
   // Load (47), nodes fixed in y/l: d/d ln l of the integral is the integral itself.
   std::vector<Real> nodes, weights;
-  load_nodes(s, nodes, weights);
+  rule_.load(s, nodes, weights);
   Real sum = 0;
   Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
   for (std::size_t j = 0; j < nodes.size(); ++j) {

@@ -1,9 +1,9 @@
 // viscoroll: the paper's 3-D solver, an ellipsoidal roller on a standard linear solid by the
 // line-contact theory.
 //
-// Panek & Kalker (1980), Sections 5-7: the equations (33), (34), (36), (46), (47) and a
-// leading-edge condition (line_residual.hpp; docs/theory.md section 4 for the form (L6) used by
-// default and why the printed (44) is not), solved for the coefficients of a(y), b(y)
+// Panek & Kalker (1980), Sections 5-7: the equations (33), (34), (36), (46), (47) and the
+// leading-edge condition in the form (L6) (line_residual.hpp; docs/theory.md section 4 for (L6)
+// and why the printed (44), opt-in in line/paper_leading_edge.hpp, is not used), solved for the coefficients of a(y), b(y)
 // (line_shape.hpp), l and d by a Levenberg-Marquardt iteration (numerics/levenberg_marquardt.hpp;
 // the system is square, so a converged solution has a zero residual to rounding), or, where the
 // equations have no root, as the certified least-squares minimum of the paper's Section 7
@@ -73,8 +73,6 @@ struct LineOptions {
   /// plus one Jacobian when it is refreshed: ~2.5 residual evaluations semi-analytic, 2 terms + 3
   /// by differences).
   int max_iterations = 100;
-  /// Leading-edge condition: (L6) (default) or the paper's (44), for comparison.
-  LeadingEdgeForm leading_edge = LeadingEdgeForm::exterior;
   /// Expansion variable of a(y), b(y); LineBasis::s_mapped with oversampling for the slow regime.
   LineBasis basis = LineBasis::t_squared;
   /// Collocation points per coefficient of b(y): the equations hold at oversampling (terms + 1)
@@ -82,13 +80,13 @@ struct LineOptions {
   /// fit of the paper (Section 7), which converges with `terms` where the line equations have no
   /// solution at all (the slow regime, V tau <~ 0.1 a0; docs/line-solver.md, "Oversampling").
   int oversampling = 1;
-  /// How the Jacobian is formed: semi-analytic (LineResidual::jacobian, default; the (L6) form
-  /// only, the paper's (44) always uses differences) or by forward differences.
+  /// How the Jacobian is formed: semi-analytic (LineResidual::jacobian, default) or by forward
+  /// differences.
   LineJacobian jacobian = LineJacobian::analytic;
   /// Where Levenberg-Marquardt stops at a least-squares minimum with no root of the equations
   /// near it, minimise |r|^2 there by Newton's method with its second-order term (the paper's
   /// least-squares solution, Section 7; docs/line-solver.md, "Least-squares minima"). Needs the
-  /// semi-analytic Jacobian and the (L6) form; otherwise such a stop is reported not converged.
+  /// semi-analytic Jacobian; otherwise such a stop is reported not converged.
   bool least_squares = true;
 
   void validate() const {
@@ -132,8 +130,8 @@ class LineSolver {
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + memory.f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
-        problem(scene, slow, memory.f, scene.speed * memory.tau), options_.terms,
-        options_.leading_edge, options_.basis, options_.oversampling);
+        problem(scene, slow, memory.f, scene.speed * memory.tau), options_.terms, options_.basis,
+        options_.oversampling);
   }
 
  private:
@@ -247,17 +245,16 @@ class LineSolver {
     // The paper's least-squares solution where the equations have no root (the last stage, with
     // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
     // Levenberg-Marquardt certifies it.
-    const bool least_squares = options_.least_squares &&
-                               options_.jacobian == LineJacobian::analytic &&
-                               options_.leading_edge == LeadingEdgeForm::exterior;
+    const bool least_squares =
+        options_.least_squares && options_.jacobian == LineJacobian::analytic;
     const numerics::LeastSquaresOptions<Real> settings{
         .max_iterations = options_.max_iterations,
         .root_tolerance = root_tolerance(),
         .analytic_jacobian = options_.jacobian == LineJacobian::analytic};
     int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
-      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.leading_edge,
-                                               options_.basis, options_.oversampling);
+      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.basis,
+                                               options_.oversampling);
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
@@ -288,8 +285,8 @@ class LineSolver {
         return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
     }
     return failure(scene, slow, c, f, vtau,
-                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.leading_edge,
-                                                  options_.basis, options_.oversampling),
+                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
+                                                  options_.oversampling),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 

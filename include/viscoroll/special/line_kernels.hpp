@@ -1,4 +1,5 @@
-// viscoroll: the kernels kappa and psi of the leading-edge condition (L2) of the line solver.
+// viscoroll: the kernels kappa and psi of the form (L2) of the paper's leading-edge condition
+// (44), used by line/paper_leading_edge.hpp (opt-in: viscoroll.hpp does not include either).
 //
 // docs/theory.md section 3, (L2), with g(t) = 1 - (1 + t^2)^{-1/2}:
 //   kappa(z) = int_0^inf e^{-z t} g(t) dt = 1/z - (pi/2) [H0(z) - Y0(z)],

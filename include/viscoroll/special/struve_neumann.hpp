@@ -1,8 +1,9 @@
 // viscoroll: H_0(x) - Y_0(x), the Struve function minus the Neumann function of order zero.
 //
 // Panek & Kalker (1980), Eq. (44), integrate Q(y') [H_0 - Y_0](|y - y'| / (V tau)) over the contact
-// length; the argument runs from 0 (a logarithmic singularity, since -Y_0 ~ (2/pi) ln(2/x)) to
-// 2l / (V tau), which is large for slow relaxation. Boost.Math has no Struve function, and
+// length (line/paper_leading_edge.hpp, opt-in: viscoroll.hpp does not include either); the
+// argument runs from 0 (a logarithmic singularity, since -Y_0 ~ (2/pi) ln(2/x)) to 2l / (V tau),
+// which is large for slow relaxation. Boost.Math has no Struve function, and
 // neither H_0 nor Y_0 alone is of use at large x: both are O(x^{-1/2}) and oscillate, while their
 // difference is positive, monotone and O(1/x).
 //

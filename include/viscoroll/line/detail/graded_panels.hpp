@@ -1,10 +1,12 @@
 // viscoroll: composite quadrature on [0, L], graded toward its singular ends.
 //
-// Internals of viscoroll/line/line_operators.hpp, line_residual.hpp and line_solver.hpp
-// (docs/line-operators.md, docs/theory.md section 7), as an integral or as a node set.
+// Internals of viscoroll/line/line_operators.hpp, line_residual.hpp, line_solver.hpp and
+// paper_leading_edge.hpp (docs/line-operators.md, docs/theory.md section 7), as an integral or as
+// a node set.
 //
-// Geometric grading (graded_integral, append_graded_nodes): an integrand with a (nearly) singular
-// point at s = 0 of scale h (a pole at s = +-i h, a logarithm, s ln s) is integrated on the panels
+// Geometric grading (graded_integral, append_scaled_nodes, append_graded_nodes): an integrand
+// with a (nearly) singular point at s = 0 of scale h (a pole at s = +-i h, a logarithm, s ln s)
+// is integrated on the panels
 //   [0, h 2^-K], [h 2^-K, h 2^-K+1], ..., [h/2, h], [h, 2h], [2h, 4h], ...,
 // and, once a doubling would end closer to L than the panel's width, on panels halving toward L,
 //   [s, (s + L)/2], ..., [L - L 2^-E, L],
@@ -72,21 +74,37 @@ void for_each_graded_panel(Real length, Real first, Real finest, const Panel& pa
   }
 }
 
-/// Integral of g over [0, length] on panels doubling from `levels` halvings below
+/// Calls panel(lo, hi) for the panels of [0, length] doubling from `levels` halvings below
 /// top = min(scale, length), then halving toward length down to width length / 2^end_levels.
 /// levels = 0 puts one panel on [0, top].
-template <class Quadrature, class Real, class G>
-Real graded_integral(const G& g, Real length, Real scale, int levels, int end_levels = 0) {
-  if (!(length > 0)) return Real(0);
+template <class Real, class Panel>
+void for_each_scaled_panel(Real length, Real scale, int levels, int end_levels,
+                           const Panel& panel) {
+  if (!(length > 0)) return;
   const Real top = std::min(scale, length);
   Real lo = top;
   for (int k = 0; k < levels; ++k) lo /= 2;
   Real finest_end = length;  // end_levels = 0: no halving toward the end
   for (int k = 0; k < end_levels; ++k) finest_end /= 2;
+  for_each_graded_panel(length, lo, finest_end, panel);
+}
+
+/// Integral of g over [0, length] on the panels of for_each_scaled_panel.
+template <class Quadrature, class Real, class G>
+Real graded_integral(const G& g, Real length, Real scale, int levels, int end_levels = 0) {
   Real sum = 0;
-  for_each_graded_panel(length, lo, finest_end,
+  for_each_scaled_panel(length, scale, levels, end_levels,
                         [&](Real a, Real b) { sum += Quadrature::integrate(g, a, b); });
   return sum;
+}
+
+/// The nodes and weights of the Quadrature's rule on the panels of for_each_scaled_panel;
+/// appends (node, weight) pairs. Quadrature: a NodalQuadratureRule.
+template <class Quadrature, class Real>
+void append_scaled_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real scale,
+                         int levels, int end_levels) {
+  for_each_scaled_panel(length, scale, levels, end_levels,
+                        [&](Real lo, Real hi) { append_panel<Quadrature>(s, w, lo, hi); });
 }
 
 /// The nodes and weights of the composite rule on [0, length] with panels from `first` and

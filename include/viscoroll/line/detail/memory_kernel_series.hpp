@@ -1,7 +1,7 @@
 // viscoroll: the memory kernel of the leading-edge condition (L6) far from the collocation point,
 // as a series in 1/s^2 (docs/theory.md section 8).
 //
-// The kernel (line_residual.hpp, (L6)) is
+// The kernel (exterior_right in line_operators.hpp, (L6)) is
 //   K(s) = V int_0^inf e^-t x_t (x_t^2 + s^2)^(-3/2) dt,   x_t = x0 + V t,
 // summed at every s-node over the t-nodes (one division and one square root per pair). For
 // s >> x_t it is a series in 1/s^2: (1 + u)^(-3/2) = sum_n c_n u^n, c_n = binom(-3/2, n), u =
