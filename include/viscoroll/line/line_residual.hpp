@@ -23,7 +23,7 @@
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
-#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_operators.hpp>
@@ -207,7 +207,7 @@ class LineResidual {
     const Real z = a / v;
     const Real k0 = special::bessel_k0_scaled(z), k1 = special::bessel_k1_scaled(z);
     const Real bessel = c1 * (a * b * k1 - here.g * k0);  // C1 e^z {a b K1 - G K0}, Eq. (42)
-    const Real r_i = special::bessel_i1_over_i0_fast(Real((1 + p_.f) * a / v));
+    const Real r_i = special::bessel_i1_over_i0_fast(strip_alpha(a, v, p_.f));
     const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
     rle = (bessel - right) / (slope * p_.a_ref);
     return {k0, k1, slope};
@@ -223,7 +223,7 @@ class LineResidual {
     using std::sqrt;
     const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
     if (!(a > 0)) return {{Real(0), b, Real(0), Real(0), Real(0)}, 0, 0, 0, 0, 0, 0, 0, 0};
-    const Real alpha = (1 + f) * a / v;                      // Eq. (37)
+    const Real alpha = strip_alpha(a, v, f);
     const Real ri = special::bessel_i1_over_i0_fast(alpha);  // I1/I0
     // DLMF 10.29.2: (I1/I0)' = 1 - (I1/I0)/x - (I1/I0)^2; 1/2 - 3x^2/16 + ... at 0.
     const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())

@@ -340,7 +340,7 @@ class LineSolver {
     for (std::size_t j = 0; j < nodes.size(); ++j) {
       const auto s = sol.functions(nodes[j]);
       if (!(s.a > 0)) continue;
-      const Real alpha = (1 + sol.f) * s.a / sol.vtau;
+      const Real alpha = strip_alpha(s.a, sol.vtau, sol.f);
       const Real vn =
           sol.c1 / 4 *
           strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, special::bessel_i1_over_i0(alpha),

@@ -21,7 +21,7 @@
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
-#include <viscoroll/core/strip_pressure.hpp>
+#include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/detail/graded_panels.hpp>
 #include <viscoroll/line/line_operators.hpp>
