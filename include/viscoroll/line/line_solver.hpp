@@ -141,6 +141,28 @@ class LineSolver {
         scene.c1, scene.c2, vtau, f, slow.a0, slow.l, scene.c1 * slow.a0 * slow.a0 * slow.l / 3};
   }
 
+  /// A solution of the scene with shape and penetration d: converged, a root, no iterations;
+  /// closed_form and make set what differs.
+  static Solution solution(const LineScene<Real>& scene, const StaticLineContact<Real>& slow,
+                           Real c, Real f, Real vtau, LineShape<Real> shape, Real d) {
+    return Solution{.shape = std::move(shape),
+                    .d = d,
+                    .a_long_term = slow.a0,
+                    .l_long_term = slow.l,
+                    .d_long_term = slow.d,
+                    .chi = Real(0),
+                    .converged = true,
+                    .root = true,
+                    .reason = {},
+                    .iterations = 0,
+                    .residual = Real(0),
+                    .warnings = {},
+                    .c1 = scene.c1,
+                    .vtau = vtau,
+                    .f = f,
+                    .compliance = c};
+  }
+
   Solution closed_form(const LineScene<Real>& scene, const StaticLineContact<Real>& s,
                        const StaticLineContact<Real>& slow, Real c, Real f,
                        const char* reason) const {
@@ -148,22 +170,8 @@ class LineSolver {
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol{.shape = shape,
-                 .d = s.d,
-                 .a_long_term = slow.a0,
-                 .l_long_term = slow.l,
-                 .d_long_term = slow.d,
-                 .chi = Real(0),
-                 .converged = true,
-                 .root = true,
-                 .reason = reason,
-                 .iterations = 0,
-                 .residual = Real(0),
-                 .warnings = {},
-                 .c1 = scene.c1,
-                 .vtau = Real(0),
-                 .f = f,
-                 .compliance = c};
+    Solution sol = solution(scene, slow, c, f, Real(0), shape, s.d);
+    sol.reason = reason;
     add_warnings(sol);
     return sol;
   }
@@ -295,22 +303,12 @@ class LineSolver {
                 const Vector& r, bool converged, std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
-    Solution sol{.shape = res.shape(x),
-                 .d = res.penetration(x),
-                 .a_long_term = slow.a0,
-                 .l_long_term = slow.l,
-                 .d_long_term = slow.d,
-                 .chi = Real(0),
-                 .converged = converged,
-                 .root = root,
-                 .reason = std::move(reason),
-                 .iterations = iterations,
-                 .residual = rmax,
-                 .warnings = {},
-                 .c1 = scene.c1,
-                 .vtau = vtau,
-                 .f = f,
-                 .compliance = c};
+    Solution sol = solution(scene, slow, c, f, vtau, res.shape(x), res.penetration(x));
+    sol.converged = converged;
+    sol.root = root;
+    sol.reason = std::move(reason);
+    sol.iterations = iterations;
+    sol.residual = rmax;
     sol.chi = rolling_friction(sol);
     add_warnings(sol);
     if (converged && !root)
