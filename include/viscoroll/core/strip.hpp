@@ -15,7 +15,9 @@
 // (StripPressure). When G satisfies (36) the same integral taken from the trailing edge
 // (docs/theory.md, "Stable evaluation of Eq. (35)") is equal to it; each form is used where it
 // neither overflows nor cancels. Only exponentials of non-positive arguments (or at most +1) are
-// formed, so nothing overflows for any V tau. The strip's first moment behind the rolling
+// formed, so nothing overflows for any V tau; and the strip computes in units of powers of two
+// in which a and C1 are of order one (StripUnits), so nothing overflows or underflows for any a
+// and C1 where the pressure is representable. The strip's first moment behind the rolling
 // friction (54) is strip_first_moment, in the cancellation-free form (P7).
 #pragma once
 
@@ -27,7 +29,9 @@
 #include <cstdint>
 #include <limits>
 #include <vector>
+#include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/validate.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
@@ -89,8 +93,22 @@ bool strip_is_glassy(Real vtau, Real f, Real a0) {
   const Real u = a0 / vtau;
   if (u == 0) return true;
   if (!(u < eps)) return false;
-  return u * (log(2 / u) + log(1 + f) / 2 + 1) <= eps;
+  // ln(2/u) as ln 2 - ln u: 2/u overflows for the smallest u.
+  return u * (boost::math::constants::ln_two<Real>() - log(u) + log(1 + f) / 2 + 1) <= eps;
 }
+
+/// The units in which a strip is computed, powers of two: a length x is held as x 2^-length, the
+/// curvature C1 as C1 2^-curvature and the compliance c as c 2^-compliance; G (a length squared)
+/// as G 4^-length. Then the pseudo-pressure p* of (32) carries 2^(curvature + length), the
+/// pressure p = p*/c of (35) 2^(curvature - compliance + length) and its slope
+/// 2^(curvature - compliance). Every operation rounds as in the caller's units (Binary), so the
+/// strip computes their bits wherever they neither overflow nor underflow, and in its own units,
+/// where a and C1 are of order one, nothing does (docs/theory.md, "Scaling").
+struct StripUnits {
+  int length = 0;      ///< binary exponent of the unit of length
+  int curvature = 0;   ///< binary exponent of the unit of C1
+  int compliance = 0;  ///< binary exponent of the unit of the compliance c
+};
 
 /// Location and value of the largest pressure on a strip.
 template <RealScalar Real>
@@ -99,7 +117,8 @@ struct PressurePeak {
   Real pressure;  ///< its value
 };
 
-/// Pressure on one strip of the contact, Eqs. (32) and (35).
+/// Pressure on one strip of the contact, Eqs. (32) and (35), computed in the strip's units
+/// (StripUnits): x and the pressure are converted at the interface only.
 ///
 /// Quadrature is a QuadratureRule policy applied on panels on which the exponential weight of
 /// Eq. (35) falls by at most e^8; with GaussLegendre<Real, 24> each panel is exact to about 1e-39
@@ -109,30 +128,89 @@ requires QuadratureRule<Quadrature, Real>
 class StripPressure {
  public:
   /// c1: curvature C1; a, b, g: half width, offset and G(y) of the strip; vtau: V tau >= 0;
-  /// f: creep ratio; compliance: (1 - nu) / (2 pi mu_D). vtau == 0 is the static strip.
+  /// f: creep ratio; compliance: (1 - nu) / (2 pi mu_D). vtau == 0 is the static strip. The
+  /// units are those in which a, C1 and the compliance lie in [1, 2).
   StripPressure(Real c1, Real a, Real b, Real g, Real vtau, Real f, Real compliance)
-      : c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance) {}
+      : units_{binary(a).e, binary(c1).e, binary(compliance).e}, f_(f) {
+    const int length = units_.length;
+    c1_ = times_power_of_two(c1, -units_.curvature);
+    a_ = times_power_of_two(a, -length);
+    b_ = times_power_of_two(b, -length);
+    g_ = times_power_of_two(g, -2 * length);
+    vtau_ = times_power_of_two(vtau, -length);
+    c_ = times_power_of_two(compliance, -units_.compliance);
+  }
 
-  Real half_width() const { return a_; }
-  Real offset() const { return b_; }
-  Real leading_edge() const { return b_ + a_; }
-  Real trailing_edge() const { return b_ - a_; }
+  /// The same strip with c1, a, b, g, vtau and compliance given in `units` (StripUnits).
+  StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
+                Real compliance)
+      : units_(units), c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance) {}
+
+  Real half_width() const { return length(a_); }
+  Real offset() const { return length(b_); }
+  Real leading_edge() const { return length(b_ + a_); }
+  Real trailing_edge() const { return length(b_ - a_); }
 
   /// Eq. (32): the pseudo-pressure p*(x); zero outside the strip.
   Real pseudo_pressure(Real x) const {
+    return times_power_of_two(pseudo_in_units(in_units(x)), units_.curvature + units_.length);
+  }
+
+  /// Eq. (35): the contact pressure p(x); zero outside the strip.
+  Real pressure(Real x) const {
+    return times_power_of_two(pressure_in_units(in_units(x)), pressure_exponent());
+  }
+
+  /// dp/dx from Eq. (7): c V tau p' = c (1 + f) p - p*; needs V tau > 0.
+  Real pressure_slope(Real x) const {
+    return times_power_of_two(slope_in_units(in_units(x)), units_.curvature - units_.compliance);
+  }
+
+  /// The largest pressure on the strip and where it sits.
+  PressurePeak<Real> peak() const { return peak_between(trailing_edge(), leading_edge()); }
+
+  /// The largest pressure on [lo, hi] (clipped to the strip) and where it sits. The location is
+  /// the root of the slope (7) to about epsilon when V tau > 0, else Brent's estimate (about
+  /// sqrt(epsilon) of the width); the value is accurate to about epsilon either way. Throws
+  /// std::invalid_argument if the value is beyond the largest finite number or below the
+  /// smallest normal one (detail::representable).
+  PressurePeak<Real> peak_between(Real lo, Real hi) const {
+    const PressurePeak<Real> peak = peak_in_units(in_units(lo), in_units(hi));
+    const Real value = detail::representable(
+        peak.pressure, pressure_exponent(), "the pressure peak of the strip", [this] {
+          return "c1 = " + detail::format_binary(c1_, units_.curvature) +
+                 ", a = " + detail::format_binary(a_, units_.length) +
+                 ", b = " + detail::format_binary(b_, units_.length) +
+                 ", V tau = " + detail::format_binary(vtau_, units_.length) +
+                 ", f = " + detail::format_value(f_) +
+                 ", compliance = " + detail::format_binary(c_, units_.compliance);
+        });
+    return {length(peak.x), value};
+  }
+
+ private:
+  static Real pi() { return boost::math::constants::pi<Real>(); }
+  /// x (caller's units) in the strip's units, and back.
+  Real in_units(Real x) const { return times_power_of_two(x, -units_.length); }
+  Real length(Real x) const { return times_power_of_two(x, units_.length); }
+  /// The binary exponent of the unit of pressure (StripUnits).
+  int pressure_exponent() const { return units_.curvature - units_.compliance + units_.length; }
+
+  // Eq. (32) in units, x in units.
+  Real pseudo_in_units(Real x) const {
     using std::sqrt;
-    const Real ahead = leading_edge() - x, behind = x - trailing_edge();
+    const Real ahead = (b_ + a_) - x, behind = x - (b_ - a_);
     if (!(ahead > 0 && behind > 0)) return Real(0);
     const Real root = sqrt(ahead * behind);  // sqrt(a^2 - xi^2) without cancellation
     const Real xi = x - b_;
     return c1_ / (2 * pi()) * (root + ((vtau_ - b_) * xi + g_) / root);
   }
 
-  /// Eq. (35): the contact pressure p(x); zero outside the strip.
-  Real pressure(Real x) const {
-    const Real ahead = leading_edge() - x, behind = x - trailing_edge();
+  // Eq. (35) in units, x in units.
+  Real pressure_in_units(Real x) const {
+    const Real ahead = (b_ + a_) - x, behind = x - (b_ - a_);
     if (!(ahead > 0 && behind > 0)) return Real(0);
-    if (vtau_ == 0) return pseudo_pressure(x) / (c_ * (1 + f_));  // Eq. (7) with V tau = 0
+    if (vtau_ == 0) return pseudo_in_units(x) / (c_ * (1 + f_));  // Eq. (7) with V tau = 0
     const Real alpha = strip_alpha(a_, vtau_, f_);
     const Real prefactor = c1_ / (2 * pi() * c_ * vtau_);
     const Real one_minus_s = ahead / a_, one_plus_s = behind / a_;
@@ -142,62 +220,54 @@ class StripPressure {
     return prefactor * interior(x, ahead, behind);
   }
 
-  /// dp/dx from Eq. (7): c V tau p' = c (1 + f) p - p*; needs V tau > 0.
-  Real pressure_slope(Real x) const {
-    return ((1 + f_) * pressure(x) - pseudo_pressure(x) / c_) / vtau_;
+  // Eq. (7) in units, x in units.
+  Real slope_in_units(Real x) const {
+    return ((1 + f_) * pressure_in_units(x) - pseudo_in_units(x) / c_) / vtau_;
   }
 
-  /// The largest pressure on the strip and where it sits.
-  PressurePeak<Real> peak() const { return peak_between(trailing_edge(), leading_edge()); }
-
-  /// The largest pressure on [lo, hi] (clipped to the strip) and where it sits. The location is
-  /// the root of the slope (7) to about epsilon when V tau > 0, else Brent's estimate (about
-  /// sqrt(epsilon) of the width); the value is accurate to about epsilon either way.
-  PressurePeak<Real> peak_between(Real lo, Real hi) const {
+  // peak_between in units.
+  PressurePeak<Real> peak_in_units(Real lo, Real hi) const {
     using std::cos;
-    lo = std::max(lo, trailing_edge());
-    hi = std::min(hi, leading_edge());
+    lo = std::max(lo, b_ - a_);
+    hi = std::min(hi, b_ + a_);
     // Samples clustered at both ends (cosine spacing) and, when there is one, through the
     // leading-edge layer of width V tau / (1 + f) where the low-speed peak sits (Fig. 6).
     std::vector<Real> xs;
     const int n = 96;
     const Real mid = (lo + hi) / 2, half = (hi - lo) / 2;
     for (int i = 0; i <= n; ++i) xs.push_back(mid - half * cos(pi() * Real(i) / Real(n)));
-    const Real layer = vtau_ / (1 + f_);
+    const Real layer = vtau_ / (1 + f_), edge = b_ + a_;
     if (vtau_ > 0 && layer < a_)
       for (Real m = Real(1) / 128; m <= 64; m *= 2)
-        if (leading_edge() - m * layer > lo && leading_edge() - m * layer < hi)
-          xs.push_back(leading_edge() - m * layer);
+        if (edge - m * layer > lo && edge - m * layer < hi) xs.push_back(edge - m * layer);
     std::sort(xs.begin(), xs.end());
     std::size_t best = 0;
-    Real best_p = pressure(xs[0]);
+    Real best_p = pressure_in_units(xs[0]);
     for (std::size_t i = 1; i < xs.size(); ++i) {
-      const Real p = pressure(xs[i]);
+      const Real p = pressure_in_units(xs[i]);
       if (p > best_p) best_p = p, best = i;
     }
     if (best == 0 || best + 1 == xs.size()) return {xs[best], best_p};  // at an end of [lo, hi]
     const Real left = xs[best - 1], right = xs[best + 1];
     if (vtau_ > 0) {
-      const Real s_left = pressure_slope(left), s_right = pressure_slope(right);
+      const Real s_left = slope_in_units(left), s_right = slope_in_units(right);
       if (s_left > 0 && s_right < 0) {
         std::uintmax_t iterations = 200;
         const auto root = boost::math::tools::toms748_solve(
-            [this](Real x) { return pressure_slope(x); }, left, right, s_left, s_right,
+            [this](Real x) { return slope_in_units(x); }, left, right, s_left, s_right,
             boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3),
             iterations);
-        const Real x = (root.first + root.second) / 2, p = pressure(x);
+        const Real x = (root.first + root.second) / 2, p = pressure_in_units(x);
         if (p >= best_p) return {x, p};
       }
     }
     const auto found =
-        boost::math::tools::brent_find_minima([this](Real x) { return -pressure(x); }, left, right,
-                                              std::numeric_limits<Real>::digits / 2);
+        boost::math::tools::brent_find_minima([this](Real x) { return -pressure_in_units(x); },
+                                              left, right, std::numeric_limits<Real>::digits / 2);
     if (-found.second >= best_p) return {found.first, -found.second};
     return {xs[best], best_p};
   }
 
- private:
-  static Real pi() { return boost::math::constants::pi<Real>(); }
   /// Exponents beyond which exp(-u) is below epsilon / 100: the integrand is dropped there.
   static Real cutoff() {
     using std::log;
@@ -284,7 +354,8 @@ class StripPressure {
     return Quadrature::integrate(integrand, Real(0), psi_s);
   }
 
-  Real c1_, a_, b_, g_, vtau_, f_, c_;
+  StripUnits units_;
+  Real c1_, a_, b_, g_, vtau_, f_, c_;  // in units_
 };
 
 }  // namespace viscoroll

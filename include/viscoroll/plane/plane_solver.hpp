@@ -11,6 +11,10 @@
 //   r_I = I1(alpha)/I0(alpha), alpha = (1+f) a/(V tau);  r_K = K1(beta)/K0(beta), beta = a/(V tau).
 // An elastic material (if constexpr), V tau <= eps a0 and the glassy limit (V tau >~ 40 a0/eps in
 // double, or +inf) are Hertz's closed form with no Bessel work (docs/theory.md, (P6)).
+// The solver computes in units of powers of two in which a0, C1 and c are of order one, with the
+// bits of the caller's units wherever these neither overflow nor underflow, and converts the
+// solution back, each number checked to be representable (docs/theory.md, "Scaling";
+// docs/errors.md).
 #pragma once
 
 #include <boost/math/tools/roots.hpp>
@@ -93,11 +97,16 @@ class PlaneSolver {
 
   const Material& material() const { return material_; }
 
-  /// Solves the scene; throws std::invalid_argument for an invalid scene.
+  /// Solves the scene; throws std::invalid_argument for an invalid scene, or one whose solution
+  /// is not representable in Real (a number of it beyond the largest finite or, not being zero,
+  /// below the smallest normal one; docs/errors.md).
   Solution solve(const PlaneScene<Real>& scene) const;
 
  private:
-  Solution rolling(const PlaneScene<Real>& scene, Real c, Real f, Real vtau, Real a0) const {
+  /// The rolling solution in `units` (StripUnits; c1, c, vtau and a0 given in them): (P5) for
+  /// A = a/a0, then b, G, Q, F0 and chi. Its numbers are in the units too (F0, Q and chi carry
+  /// the curvature's: PlaneSolver::solve converts them).
+  Solution rolling(StripUnits units, Real c1, Real c, Real f, Real vtau, Real a0) const {
     using special::bessel_i1_over_i0;
     using special::bessel_i2_over_i0;
     using special::bessel_k1_over_k0;
@@ -140,9 +149,9 @@ class PlaneSolver {
     // (P4): b from (36) = leading-edge condition (G = a b K1/K0); then G (36) and Q (46) of the
     // strip, and F0 = C1 a0^2 / 4 from the load, Eq. (33) with (52).
     const Real b = vtau * creep * r_i / (r_i + r_k);
-    const auto sf = strip_functions_from_ratio(scene.c1, a, b, vtau, f, r_i);
+    const auto sf = strip_functions_from_ratio(c1, a, b, vtau, f, r_i);
     const Real g = sf.g, q = sf.q;
-    const Real f0 = scene.c1 * a0 * a0 / 4;
+    const Real f0 = c1 * a0 * a0 / 4;
     // (P7): chi = C1 xbar, xbar = [2 b G + V tau (f a^2 I2/I0 + 2 a b r_I) / (1+f)] / a0^2,
     // every term non-negative (the paper's (54) cancels as V tau grows).
     const Real delta = bessel_i2_over_i0(alpha);
@@ -153,23 +162,24 @@ class PlaneSolver {
                     .a_long_term = a0,
                     .f0 = f0,
                     .q = q,
-                    .chi = scene.c1 * xbar,
+                    .chi = c1 * xbar,
                     .converged = converged,
                     .iterations = iterations,
                     .residual = residual,
-                    .strip = StripPressure<Real, Quadrature>(scene.c1, a, b, g, vtau, f, c)};
+                    .strip = StripPressure<Real, Quadrature>(units, c1, a, b, g, vtau, f, c)};
   }
 
-  /// Hertz's strip of half width a under the compliance (1 + f) c: b = G = Q = chi = 0,
-  /// F0 = C1 a^2 / 4 (Eq. 33 with G = 0). The glassy limit is reported in this form with f = 0
-  /// (the instantaneous compliance alone), as LineSolver reports its glassy closed form.
-  static Solution static_solution(const PlaneScene<Real>& scene, Real a, Real a0, Real c, Real f) {
-    const StripPressure<Real, Quadrature> strip(scene.c1, a, Real(0), Real(0), Real(0), f, c);
+  /// Hertz's strip of half width a under the compliance (1 + f) c, in `units` as rolling():
+  /// b = G = Q = chi = 0, F0 = C1 a^2 / 4 (Eq. 33 with G = 0). The glassy limit is reported in
+  /// this form with f = 0 (the instantaneous compliance alone), as LineSolver reports its glassy
+  /// closed form.
+  static Solution static_solution(StripUnits units, Real c1, Real a, Real a0, Real c, Real f) {
+    const StripPressure<Real, Quadrature> strip(units, c1, a, Real(0), Real(0), Real(0), f, c);
     return Solution{.a = a,
                     .b = Real(0),
                     .g = Real(0),
                     .a_long_term = a0,
-                    .f0 = scene.c1 * a * a / 4,
+                    .f0 = c1 * a * a / 4,
                     .q = Real(0),
                     .chi = Real(0),
                     .converged = true,
@@ -189,26 +199,60 @@ template <RealScalar Real, SingleTimeModel Material, class Quadrature>
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scene) const
     -> Solution {
-  using std::sqrt;
   scene.validate();
   // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic).
   const Real c = material_.instantaneous_compliance();
   const PronyTerm<Real> memory = detail::single_memory_term(material_);
   const Real f = memory.f;
-  const Real vtau = scene.speed * memory.tau;
+  const auto inputs = [&] {
+    return "c1 = " + detail::format_value(scene.c1) +
+           ", load = " + detail::format_value(scene.load) +
+           ", speed = " + detail::format_value(scene.speed) +
+           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+           ", tau = " + detail::format_value(memory.tau);
+  };
+  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+  // Scaling (docs/theory.md): lengths in units of a power of two near a0, C1 and c in units of
+  // their own powers of two; every product below rounds as in the caller's units.
+  const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
+  const auto creep = binary<Real>(1 + f);
   // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
-  const Real a0 = sqrt(4 * c * (1 + f) * scene.load / scene.c1);
-  if constexpr (Material::is_viscoelastic) {
-    if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0) {
-      if (!glassy(vtau, f, a0)) return rolling(scene, c, f, vtau, a0);
-      // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
-      const Real a = sqrt(4 * c * scene.load / scene.c1);
-      return static_solution(scene, a, a0, c, Real(0));
+  const auto a0 =
+      binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
+  const StripUnits units{a0.e, c1.e, cc.e};
+  Solution s = [&] {
+    if constexpr (Material::is_viscoelastic) {
+      const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+      const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - units.length);
+      if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0.m) {
+        if (!glassy(vtau, f, a0.m)) return rolling(units, c1.m, cc.m, f, vtau, a0.m);
+        // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
+        const auto a = binary_sqrt<Real>(4 * cc.m * load.m / c1.m, cc.e + load.e - c1.e);
+        const Real a_glassy = times_power_of_two(a.m, a.e - units.length);
+        return static_solution(units, c1.m, a_glassy, a0.m, cc.m, Real(0));
+      }
     }
-  }
-  // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic: Hertz
-  // with the long-term compliance, no Bessel work.
-  return static_solution(scene, a0, a0, c, f);
+    // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic:
+    // Hertz with the long-term compliance, no Bessel work.
+    return static_solution(units, c1.m, a0.m, a0.m, cc.m, f);
+  }();
+  // The solution in the caller's units: each number zero or normal and finite, else an error
+  // naming the inputs (docs/errors.md).
+  const int length = units.length, area = 2 * length, curvature = units.curvature;
+  const auto in = [&](Real x, int exponent, std::string_view what) {
+    return detail::representable(x, exponent, what, inputs);
+  };
+  const Real mean_pressure = load.m / (2 * s.a);
+  s.a_long_term =
+      in(s.a_long_term, length, "the long-term half width a0 = sqrt(4 c (1+f) load/c1)");
+  s.a = in(s.a, length, "the contact half width a");
+  s.b = in(s.b, length, "the offset b of the contact");
+  s.g = in(s.g, area, "G of Eq. (36)");
+  s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
+  s.q = in(s.q, curvature + area, "Q of Eq. (46)");
+  s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
+  in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
+  return s;
 }
 
 /// The scalar deduced from the material: PlaneSolver solver(StandardLinearSolid<double>(...)).
