@@ -2,7 +2,7 @@
 // f = 9, nu = 0.5, C2/C1 = (ln 20 - 1)/25, the load of a static a0 = C1 = 1) at one speed over a
 // list of discretisations, one line per solve: N, converged, iterations, a(0), b(0), l, d, chi,
 // residual, median wall seconds of `--repeat` solves, reason. The data behind
-// docs/line-solver.md's tables and docs/line-solver-convergence.txt.
+// docs/line-solver.md's and docs/validation.md's tables.
 //
 // usage: line_self_convergence <V tau/a0> <terms>... [--repeat R] [--basis t2|s|mapped]
 //        [--oversampling K] [--max-iterations M]

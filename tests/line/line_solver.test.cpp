@@ -503,7 +503,7 @@ TEST_CASE("line solver: (52), (53) and chi (54) from the reconstructed pressure"
   // the total pressure is the load, to the load row's residual and the quadrature (measured
   // 2.2e-16; 8.6e-13 with (32, 16) points).
   CHECK(rel(mm[0], sc.load()) <= 1e-13);
-  // The recorded value (docs/line-solver-convergence.txt, 12 digits).
+  // A recorded 12-digit value; `line_self_convergence 1 4` prints its first 10 (0.4113542495).
   CHECK(rel(s.chi, 0.411354249533) <= 1e-9);
 
   // With C1 = 1 a wrong power of C1 would pass unseen. Scaling C1, C2 and the load by 2 keeps
@@ -620,7 +620,8 @@ TEMPLATE_TEST_CASE("line solver: float, double and long double agree", "[line]",
   CHECK(s.residual <= 64 * std::sqrt(eps<Real>()));  // what converged promises
   const long double tol = std::is_same_v<Real, float> ? 1e-4L : 1e-11L;
   CHECK(50 * static_cast<long double>(s.residual) <= tol);
-  // The recorded double result (docs/line-solver-convergence.txt, N = 3, V = 1, 12 digits).
+  // A recorded 12-digit double result at N = 3, V = a0; `line_self_convergence 1 3` prints its
+  // first 10 (a(0) = 0.6079026191, chi = 0.4113211414).
   CHECK(rel<long double>(s.a(Real(0)), 0.607902619139L) <= std::max(tol, 1e-11L));
   CHECK(rel<long double>(s.chi, 0.411321141423L) <= std::max(tol, 1e-11L));
   if constexpr (!std::is_same_v<Real, long double>) {
