@@ -19,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 #include <viscoroll/bem/bem_solver.hpp>
@@ -30,6 +31,7 @@ void BM_bem_paper_scene(benchmark::State& state) {
   const double f = 9, nu = 0.5, mu = 1, c = (1 - nu) / (2 * std::acos(-1.0) * mu);
   viscoroll::BemOptions o;
   o.grid = static_cast<int>(state.range(0));
+  if (const char* e = std::getenv("BEM_COARSE")) o.coarse_tolerance = std::atof(e);
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
   const viscoroll::BemScene<double> scene{1.0, (std::log(20.0) - 1) / 25, 5.0 / (3 * (1 + f) * c),
                                           1.0};

@@ -60,6 +60,10 @@ struct BemOptions {
   int max_active_set_iterations = 200;
   int max_krylov_iterations = 5000;  ///< GMRES steps over all active-set iterations
   int restart = 80;                  ///< GMRES steps per cycle
+  /// GMRES' relative residual while the active set changes (numerics/active_set.hpp, inexact
+  /// early solves); the set that one leaves unchanged is solved again to `tolerance`, which alone
+  /// decides convergence. 0 solves every set to `tolerance`.
+  double coarse_tolerance = 1e-3;
   /// Right-precondition GMRES with the inverse of the continuum symbol (B11).
   bool precondition = true;
 
@@ -78,6 +82,9 @@ struct BemOptions {
                         " cells asked)");
     detail::require(tolerance >= 1e-15 && tolerance <= 1e-3, "tolerance", tolerance,
                     "1e-15 <= tolerance <= 1e-3");
+    detail::require(coarse_tolerance == 0 || (coarse_tolerance >= 1e-15 && coarse_tolerance <= 0.1),
+                    "coarse_tolerance", coarse_tolerance,
+                    "0 (off) or 1e-15 <= coarse_tolerance <= 0.1");
     detail::require(max_active_set_iterations >= 1 && max_active_set_iterations <= 100000,
                     "max_active_set_iterations", max_active_set_iterations,
                     "1 <= max_active_set_iterations <= 100000");

@@ -188,7 +188,8 @@ class BemSolver {
         numerics::ActiveSetSettings<Real>{.tolerance = tol,
                                           .restart = options_.restart,
                                           .max_iterations = options_.max_active_set_iterations,
-                                          .max_krylov_iterations = options_.max_krylov_iterations},
+                                          .max_krylov_iterations = options_.max_krylov_iterations,
+                                          .coarse_tolerance = Real(options_.coarse_tolerance)},
         state);
     Solution sol = measure(scene, grid, hertz, op, h, std::move(state), report);
     judge(sol, scene, terms);

@@ -18,9 +18,10 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
-#include <unsupported/Eigen/FFT>
+#include <memory>
 #include <vector>
 #include <viscoroll/bem/bem_scene.hpp>
+#include <viscoroll/bem/fft_backend.hpp>
 #include <viscoroll/bem/rectangle_influence.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -113,13 +114,19 @@ class InfluenceTable {
   std::vector<Real> k_;
 };
 
-/// (B7): the operator u = K * p applied by FFT (Eigen's FFT, kissfft back end) on the grid
-/// zero-padded to nfx x nfy.
-///   - ConvolutionOperator(table): the kernel's padded spectrum, from an InfluenceTable;
-///   - apply(p, u): u = K * p, two 2-D transforms of the padded size;
-///   - apply_symbol(symbol, p, u): the same with another spectrum (the preconditioner of (B11));
-///   - nx(), ny(): the grid; fft_nx(), fft_ny(): the padded transform's size.
-/// apply and apply_symbol share work arrays: one operator serves one thread.
+/// (B7): the operator u = K * p applied by real-to-complex FFT (fft_backend.hpp: FFTW where the
+/// build found it, else Eigen's FFT) on the grid zero-padded to nfx x nfy. The spectra are half
+/// spectra: nfx/2 + 1 x nfy values, index m + (nfx/2 + 1) n, for the x wavenumbers m = 0 ..
+/// nfx/2 (the others are their complex conjugates, the data being real).
+///   - ConvolutionOperator(table): the kernel's padded spectrum, from an InfluenceTable,
+///     transformed once;
+///   - apply(p, u): u = K * p, one forward and one inverse 2-D transform of the padded size;
+///   - apply_symbol(symbol, p, u): the same with another half spectrum (the preconditioner of
+///     (B11)), unscaled: the operator divides by nfx nfy;
+///   - nx(), ny(): the grid; fft_nx(), fft_ny(): the padded transform's size; spectrum_nx():
+///     nfx/2 + 1.
+/// apply and apply_symbol share work arrays: one operator serves one thread (copies share the
+/// kernel's spectrum and have their own work arrays).
 template <RealScalar Real>
 class ConvolutionOperator {
  public:
@@ -131,94 +138,94 @@ class ConvolutionOperator {
         ny_(table.ny()),
         nfx_(detail::fft_size(2 * table.nx() - 1)),
         nfy_(detail::fft_size(2 * table.ny() - 1)),
-        kernel_(static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(nfy_)),
-        work_(kernel_.size()),
-        line_x_(static_cast<std::size_t>(nfx_)),
-        line_y_(static_cast<std::size_t>(nfy_)),
-        out_x_(static_cast<std::size_t>(nfx_)),
-        out_y_(static_cast<std::size_t>(nfy_)) {
-    std::fill(work_.begin(), work_.end(), Complex(0));
-    for (int dj = -(ny_ - 1); dj <= ny_ - 1; ++dj)
-      for (int di = -(nx_ - 1); di <= nx_ - 1; ++di)
-        work_[at((di + nfx_) % nfx_, (dj + nfy_) % nfy_)] = Complex(table(di, dj));
-    transform(work_, nfy_, false);
-    kernel_ = work_;
-  }
+        fft_(nfx_, nfy_, ny_),
+        kernel_(kernel_spectrum(table, nfx_, nfy_)) {}
+
+  ConvolutionOperator(const ConvolutionOperator& o)
+      : nx_(o.nx_), ny_(o.ny_), nfx_(o.nfx_), nfy_(o.nfy_), fft_(o.nfx_, o.nfy_, o.ny_),
+        kernel_(o.kernel_) {}
+  ConvolutionOperator& operator=(const ConvolutionOperator&) = delete;
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   int fft_nx() const { return nfx_; }
   int fft_ny() const { return nfy_; }
+  int spectrum_nx() const { return nfx_ / 2 + 1; }
+  std::size_t spectrum_size() const {
+    return static_cast<std::size_t>(spectrum_nx()) * static_cast<std::size_t>(nfy_);
+  }
 
   /// u = K * p on the nx x ny grid (flat index i + nx j); u and p have nx ny entries.
   template <class In, class Out>
   void apply(const In& p, Out& u) const {
-    std::fill(work_.begin(), work_.end(), Complex(0));
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i)
-        work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
-    transform(work_, ny_, false);
-    for (std::size_t q = 0; q < work_.size(); ++q) work_[q] *= kernel_[q];
-    transform(work_, ny_, true);
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i)
-        u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
+    load(p);
+    fft_.forward_in_place();
+    Complex* s = fft_.spectrum_data();
+    const std::vector<Complex>& k = *kernel_;
+    for (std::size_t q = 0; q < k.size(); ++q) s[q] *= k[q];
+    store(u);
   }
 
-  /// Multiplies the padded spectrum of p by `symbol` (nfx nfy values, index m + nfx n) instead of
-  /// the kernel's: a circulant operator on the padded grid, restricted to the nx x ny grid.
+  /// Multiplies the padded half spectrum of p by `symbol` (spectrum_size() values, index
+  /// m + spectrum_nx() n) instead of the kernel's: a circulant operator on the padded grid,
+  /// restricted to the nx x ny grid.
   template <class In, class Out>
   void apply_symbol(const std::vector<Complex>& symbol, const In& p, Out& u) const {
-    std::fill(work_.begin(), work_.end(), Complex(0));
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i)
-        work_[at(i, j)] = Complex(p[static_cast<std::size_t>(i + nx_ * j)]);
-    transform(work_, ny_, false);
-    for (std::size_t q = 0; q < work_.size(); ++q) work_[q] *= symbol[q];
-    transform(work_, ny_, true);
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i)
-        u[static_cast<std::size_t>(i + nx_ * j)] = work_[at(i, j)].real();
+    load(p);
+    fft_.forward_in_place();
+    Complex* s = fft_.spectrum_data();
+    const Real scale = Real(1) / (Real(nfx_) * Real(nfy_));
+    for (std::size_t q = 0; q < symbol.size(); ++q) s[q] *= symbol[q] * scale;
+    store(u);
   }
 
  private:
+  /// The kernel's half spectrum divided by nfx nfy (the inverse transform is unscaled). The
+  /// kernel fills every row of the padded grid: its transform is not pruned (rows = nfy).
+  template <class Quadrature>
+  static std::shared_ptr<const std::vector<Complex>> kernel_spectrum(
+      const InfluenceTable<Real, Quadrature>& table, int nfx, int nfy) {
+    const int nx = table.nx(), ny = table.ny();
+    PaddedTransform<Real> fft(nfx, nfy, nfy);
+    Real* r = fft.real_data();
+    std::fill(r, r + static_cast<std::size_t>(nfx) * static_cast<std::size_t>(nfy), Real(0));
+    for (int dj = -(ny - 1); dj <= ny - 1; ++dj)
+      for (int di = -(nx - 1); di <= nx - 1; ++di)
+        r[static_cast<std::size_t>((di + nfx) % nfx) +
+          static_cast<std::size_t>(nfx) * static_cast<std::size_t>((dj + nfy) % nfy)] =
+            table(di, dj);
+    fft.forward_in_place();
+    const Real scale = Real(1) / (Real(nfx) * Real(nfy));
+    const Complex* s = fft.spectrum_data();
+    auto k = std::make_shared<std::vector<Complex>>(static_cast<std::size_t>(nfx / 2 + 1) *
+                                                    static_cast<std::size_t>(nfy));
+    for (std::size_t q = 0; q < k->size(); ++q) (*k)[q] = s[q] * scale;
+    return k;
+  }
   std::size_t at(int i, int j) const {
     return static_cast<std::size_t>(i) +
            static_cast<std::size_t>(nfx_) * static_cast<std::size_t>(j);
   }
-
-  /// 2-D transform of the padded array; only the first `rows` rows are non-zero on input of the
-  /// forward transform (or needed on output of the inverse), so only those are transformed in x.
-  void transform(std::vector<Complex>& a, int rows, bool inverse) const {
-    if (!inverse) {
-      for (int j = 0; j < rows; ++j) {
-        for (int i = 0; i < nfx_; ++i) line_x_[static_cast<std::size_t>(i)] = a[at(i, j)];
-        fft_.fwd(out_x_, line_x_);
-        for (int i = 0; i < nfx_; ++i) a[at(i, j)] = out_x_[static_cast<std::size_t>(i)];
-      }
-      for (int i = 0; i < nfx_; ++i) {
-        for (int j = 0; j < nfy_; ++j) line_y_[static_cast<std::size_t>(j)] = a[at(i, j)];
-        fft_.fwd(out_y_, line_y_);
-        for (int j = 0; j < nfy_; ++j) a[at(i, j)] = out_y_[static_cast<std::size_t>(j)];
-      }
-    } else {
-      for (int i = 0; i < nfx_; ++i) {
-        for (int j = 0; j < nfy_; ++j) line_y_[static_cast<std::size_t>(j)] = a[at(i, j)];
-        fft_.inv(out_y_, line_y_);
-        for (int j = 0; j < nfy_; ++j) a[at(i, j)] = out_y_[static_cast<std::size_t>(j)];
-      }
-      for (int j = 0; j < rows; ++j) {
-        for (int i = 0; i < nfx_; ++i) line_x_[static_cast<std::size_t>(i)] = a[at(i, j)];
-        fft_.inv(out_x_, line_x_);
-        for (int i = 0; i < nfx_; ++i) a[at(i, j)] = out_x_[static_cast<std::size_t>(i)];
-      }
+  /// The first ny rows of the padded real array: p, then zeros to nfx.
+  template <class In>
+  void load(const In& p) const {
+    Real* r = fft_.real_data();
+    for (int j = 0; j < ny_; ++j) {
+      for (int i = 0; i < nx_; ++i) r[at(i, j)] = Real(p[static_cast<std::size_t>(i + nx_ * j)]);
+      std::fill(r + at(nx_, j), r + at(0, j + 1), Real(0));
     }
+  }
+  template <class Out>
+  void store(Out& u) const {
+    fft_.inverse_in_place();
+    const Real* r = fft_.real_data();
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) u[static_cast<std::size_t>(i + nx_ * j)] = r[at(i, j)];
   }
 
   int nx_, ny_, nfx_, nfy_;
-  std::vector<Complex> kernel_;
-  mutable std::vector<Complex> work_, line_x_, line_y_, out_x_, out_y_;
-  mutable Eigen::FFT<Real> fft_;
+  mutable PaddedTransform<Real> fft_;
+  std::shared_ptr<const std::vector<Complex>> kernel_;
 };
 
 /// (B11): the inverse continuum symbol |k| / (2 pi c (1 + sum f_k / (1 - i k_x V tau_k))) on
@@ -234,19 +241,19 @@ std::vector<std::complex<Real>> preconditioner_symbol(const BemGrid<Real>& grid,
   using std::sin;
   using std::sqrt;
   const Real pi = boost::math::constants::pi<Real>();
-  const int nfx = op.fft_nx(), nfy = op.fft_ny();
-  std::vector<Complex> s(static_cast<std::size_t>(nfx) * static_cast<std::size_t>(nfy));
+  const int nfx = op.fft_nx(), nfy = op.fft_ny(), nfxh = op.spectrum_nx();
+  std::vector<Complex> s(op.spectrum_size());
   const Real kmin = std::min(2 * pi / (Real(nfx) * grid.hx), 2 * pi / (Real(nfy) * grid.hy));
   for (int n = 0; n < nfy; ++n)
-    for (int m = 0; m < nfx; ++m) {
-      const int mm = m <= nfx / 2 ? m : m - nfx, nn = n <= nfy / 2 ? n : n - nfy;
+    for (int m = 0; m < nfxh; ++m) {
+      const int mm = m, nn = n <= nfy / 2 ? n : n - nfy;
       const Real kx = 2 * pi * Real(mm) / (Real(nfx) * grid.hx),
                  ky = 2 * pi * Real(nn) / (Real(nfy) * grid.hy);
       const Real qx = 2 * sin(kx * grid.hx / 2) / grid.hx, qy = 2 * sin(ky * grid.hy / 2) / grid.hy;
       const Real k = std::max(sqrt(qx * qx + qy * qy), kmin);
       Complex memory(1);
       for (const auto& t : terms) memory += t.f / Complex(1, -kx * speed * t.tau);
-      s[static_cast<std::size_t>(m) + static_cast<std::size_t>(nfx) * static_cast<std::size_t>(n)] =
+      s[static_cast<std::size_t>(m) + static_cast<std::size_t>(nfxh) * static_cast<std::size_t>(n)] =
           k / (2 * pi * c * memory);
     }
   return s;

@@ -11,6 +11,11 @@
 //   A <- {q in A : p_q > 0} + {q not in A : g_q < -tol s},                           (AS2)
 // and stops when A no longer changes. The scale s (a displacement) puts the load row in the units
 // of the others and sets the gap tolerance.
+// Inexact early solves (an inexact semismooth Newton method): with a coarse tolerance set, (AS1)
+// is solved only to it while A changes; once a coarse solve leaves A unchanged, the same A is
+// solved again to the tolerance, and the iteration stops only when that tight solve leaves A
+// unchanged. The stopping test is the exact one, so the result is that of the exact iteration to
+// the tolerance; the early sets, far from the final one, cost fewer GMRES steps.
 #pragma once
 
 #include <Eigen/Core>
@@ -53,6 +58,9 @@ struct ActiveSetSettings {
   int restart;         ///< GMRES steps per cycle
   int max_iterations;  ///< active-set iterations
   int max_krylov_iterations;  ///< GMRES steps over all active-set iterations
+  /// GMRES' relative residual while A changes (see above); 0 or <= tolerance: every solve to the
+  /// tolerance.
+  Real coarse_tolerance = 0;
 };
 
 /// The iterate: on entry the starting guess, on exit the last iterate.
@@ -86,6 +94,7 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
   std::vector<std::size_t> cells;
   std::set<std::vector<std::size_t>> seen;
   ActiveSetReport report;
+  bool coarse = settings.coarse_tolerance > settings.tolerance;
   for (; report.iterations < settings.max_iterations; ++report.iterations) {
     cells.clear();
     for (std::size_t q = 0; q < n; ++q)
@@ -95,8 +104,14 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
       break;
     }
     if (!seen.insert(cells).second) {
-      report.reason = "active set cycles";
-      break;
+      if (!coarse) {
+        report.reason = "active set cycles";
+        break;
+      }
+      // A coarse iterate returned to a set: from here on every solve is tight.
+      coarse = false;
+      seen.clear();
+      seen.insert(cells);
     }
     const Eigen::Index na = static_cast<Eigen::Index>(cells.size());
     const auto cell = [&](Eigen::Index k) { return cells[static_cast<std::size_t>(k)]; };
@@ -127,7 +142,8 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
     }
     b[na] = load.scale;
     x[na] = state.d;
-    const auto rep = gmres<Real>(apply_a, apply_m, b, x, settings.tolerance, settings.restart,
+    const Real tolerance = coarse ? settings.coarse_tolerance : settings.tolerance;
+    const auto rep = gmres<Real>(apply_a, apply_m, b, x, tolerance, settings.restart,
                                  settings.max_krylov_iterations - report.krylov_iterations);
     report.krylov_iterations += rep.iterations;
     std::fill(p.begin(), p.end(), Real(0));
@@ -149,6 +165,12 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
       const bool now = active[q] ? p[q] > 0 : g < -gap_tol;
       if (now != static_cast<bool>(active[q])) changed = true;
       active[q] = now;
+    }
+    if (!changed && coarse) {
+      // The set of a coarse solve: solve it again to the tolerance.
+      coarse = false;
+      seen.erase(cells);
+      continue;
     }
     if (!changed) {
       report.converged = true;
