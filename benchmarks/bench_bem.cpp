@@ -31,7 +31,8 @@ void BM_bem_paper_scene(benchmark::State& state) {
   const double f = 9, nu = 0.5, mu = 1, c = (1 - nu) / (2 * std::acos(-1.0) * mu);
   viscoroll::BemOptions o;
   o.grid = static_cast<int>(state.range(0));
-  if (const char* e = std::getenv("BEM_COARSE")) o.coarse_tolerance = std::atof(e);
+  o.threads = static_cast<int>(state.range(1));
+  if (const char* e = std::getenv("VISCOROLL_BEM_COARSE")) o.coarse_tolerance = std::atof(e);
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
   const viscoroll::BemScene<double> scene{1.0, (std::log(20.0) - 1) / 25, 5.0 / (3 * (1 + f) * c),
                                           1.0};
@@ -49,6 +50,8 @@ void BM_bem_paper_scene(benchmark::State& state) {
   state.counters["active_set_iterations"] = s.iterations;
   state.counters["gmres_iterations"] = s.krylov_iterations;
   state.counters["cells"] = static_cast<double>(s.grid.size());
+  state.counters["setup_s"] = s.seconds_setup;
+  state.counters["solve_s"] = s.seconds_solve;
 }
 
 /// The paper's grid for N elements per semi-axis (static Hertz ellipse of the long-term
@@ -136,11 +139,22 @@ BENCHMARK_TEMPLATE(BM_bem_apply, long double)
 // Arguments: regime (0 elastic, 1 V tau = 0, 2 V tau/a0 = 1, 3 V tau/a0 = 1e12), N.
 BENCHMARK(BM_bem_setup)->ArgsProduct({{0, 1, 2, 3}, {8, 16}})->Unit(benchmark::kMillisecond);
 
+// Arguments: N, threads of the influence table.
 BENCHMARK(BM_bem_paper_scene)
-    ->Arg(8)
-    ->Arg(12)
-    ->Arg(16)
-    ->Arg(24)
-    ->Arg(32)
+    ->Args({8, 1})
+    ->Args({12, 1})
+    ->Args({16, 1})
+    ->Args({24, 1})
+    ->Args({32, 1})
+    ->Args({64, 1})
+    ->Args({16, 2})
+    ->Args({32, 2})
+    ->Args({64, 2})
     ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+// The million-cell grid (N = 312: 1001 x 1001 cells), on two threads; one iteration per run.
+BENCHMARK(BM_bem_paper_scene)
+    ->Args({312, 2})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
     ->UseRealTime();

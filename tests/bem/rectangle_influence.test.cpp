@@ -177,3 +177,20 @@ TEST_CASE("bem: memory coefficients of a long memory", "[bem]") {
     }
   }
 }
+
+TEST_CASE("bem: the far field's rule selection equals the point count formula", "[bem]") {
+  // gauss_rule_for (thresholds, no logarithms) picks the smallest rule of gauss_sum_n with at
+  // least gauss_points_needed points, away from the thresholds themselves.
+  const int rules[] = {3, 4, 5, 6, 8, 10, 13, 16, 24};
+  for (double q = 1.01; q < 1e6; q *= 1.013) {
+    const int needed = viscoroll::detail::gauss_points_needed<double>(q);
+    int want = 24;
+    for (const int r : rules)
+      if (r >= needed) {
+        want = r;
+        break;
+      }
+    INFO("q = " << q);
+    CHECK(viscoroll::detail::gauss_rule_for<double>(q) == want);
+  }
+}

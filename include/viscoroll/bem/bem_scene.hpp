@@ -64,6 +64,9 @@ struct BemOptions {
   /// early solves); the set that one leaves unchanged is solved again to `tolerance`, which alone
   /// decides convergence. 0 solves every set to `tolerance`.
   double coarse_tolerance = 1e-3;
+  /// Threads that build the influence table (its rows are independent; the result does not
+  /// depend on the count). 1 leaves the other cores to a sweep over speeds.
+  int threads = 1;
   /// Right-precondition GMRES with the inverse of the continuum symbol (B11).
   bool precondition = true;
 
@@ -85,6 +88,7 @@ struct BemOptions {
     detail::require(coarse_tolerance == 0 || (coarse_tolerance >= 1e-15 && coarse_tolerance <= 0.1),
                     "coarse_tolerance", coarse_tolerance,
                     "0 (off) or 1e-15 <= coarse_tolerance <= 0.1");
+    detail::require(threads >= 1 && threads <= 1024, "threads", threads, "1 <= threads <= 1024");
     detail::require(max_active_set_iterations >= 1 && max_active_set_iterations <= 100000,
                     "max_active_set_iterations", max_active_set_iterations,
                     "1 <= max_active_set_iterations <= 100000");

@@ -377,7 +377,7 @@ auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
   if (scene.profile) validate_profile(scene, grid);
   const auto terms = effective_terms(grid, scene.speed);
   const Real c = material_.instantaneous_compliance();
-  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, scene.speed);
+  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, scene.speed, options_.threads);
   const bem::ConvolutionOperator<Real> op(table);
   const std::vector<Complex> symbol = bem::preconditioner_symbol(grid, op, c, terms, scene.speed);
   const double setup = std::chrono::duration<double>(clock::now() - t0).count();

@@ -18,6 +18,8 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <exception>
+#include <thread>
 #include <memory>
 #include <vector>
 #include <viscoroll/bem/bem_scene.hpp>
@@ -63,8 +65,9 @@ std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
 /// (B6): the influence coefficients per unit pressure of every offset (di, dj), |di| < nx,
 /// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k. The memory
 /// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default).
-///   - InfluenceTable(grid, c, terms, V): the table of the grid's offsets for the memory terms
-///     (f_k, tau_k) at speed V, computed in coefficient_real_t<Real> and rounded once;
+///   - InfluenceTable(grid, c, terms, V, threads = 1): the table of the grid's offsets for the
+///     memory terms (f_k, tau_k) at speed V, computed in coefficient_real_t<Real> and rounded
+///     once, its rows shared among `threads` threads (the same table for any count);
 ///   - operator()(di, dj): the coefficient of offset (di, dj);
 ///   - nx(), ny(): the grid's cell counts.
 template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
@@ -72,31 +75,31 @@ requires NodalQuadratureRule<Quadrature, coefficient_real_t<Real>>
 class InfluenceTable {
  public:
   InfluenceTable(const BemGrid<Real>& grid, Real compliance,
-                 const std::vector<PronyTerm<Real>>& terms, Real speed)
+                 const std::vector<PronyTerm<Real>>& terms, Real speed, int threads = 1)
       : nx_(grid.nx),
         ny_(grid.ny),
         k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)) {
-    using W = coefficient_real_t<Real>;
-    const int m = nx_ - 1;
-    const W hx = W(grid.hx), hy = W(grid.hy);
-    for (int j = 0; j < ny_; ++j) {
-      const W y = W(j) * hy;
-      std::vector<W> row(static_cast<std::size_t>(2 * m + 1));
-      for (int i = -m; i <= m; ++i)
-        row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
-      std::vector<W> total = row;
-      for (const auto& t : terms) {
-        const W length = W(speed) * W(t.tau);
-        // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4).
-        const std::vector<W> mem =
-            length > 0 ? memory_row<W, Quadrature>(m, y, hx, hy, length) : row;
-        for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
-      }
-      for (int i = -m; i <= m; ++i)
-        k_[static_cast<std::size_t>(i + m) +
-           static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
-            Real(W(compliance) * total[static_cast<std::size_t>(i + m)]);
+    // The rows dj are independent: `threads` threads take every threads-th row each, so the table
+    // is the same for any thread count.
+    const int workers = std::max(1, std::min(threads, ny_));
+    if (workers == 1) {
+      for (int j = 0; j < ny_; ++j) fill_row(grid, compliance, terms, speed, j);
+      return;
     }
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
+    {
+      std::vector<std::jthread> pool;
+      for (int w = 0; w < workers; ++w)
+        pool.emplace_back([&, w] {
+          try {
+            for (int j = w; j < ny_; j += workers) fill_row(grid, compliance, terms, speed, j);
+          } catch (...) {
+            errors[static_cast<std::size_t>(w)] = std::current_exception();
+          }
+        });
+    }
+    for (const auto& e : errors)
+      if (e) std::rethrow_exception(e);
   }
 
   /// The coefficient of offset (di, dj) = (i - k, j - l): displacement at cell (i, j) per unit
@@ -110,6 +113,30 @@ class InfluenceTable {
   int ny() const { return ny_; }
 
  private:
+  /// Row dj = j of the table: Love's coefficients (B1)-(B2) plus each memory term's (B3)-(B5).
+  void fill_row(const BemGrid<Real>& grid, Real compliance,
+                const std::vector<PronyTerm<Real>>& terms, Real speed, int j) {
+    using W = coefficient_real_t<Real>;
+    const int m = nx_ - 1;
+    const W hx = W(grid.hx), hy = W(grid.hy);
+    const W y = W(j) * hy;
+    std::vector<W> row(static_cast<std::size_t>(2 * m + 1));
+    for (int i = -m; i <= m; ++i)
+      row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
+    std::vector<W> total = row;
+    for (const auto& t : terms) {
+      const W length = W(speed) * W(t.tau);
+      // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4).
+      const std::vector<W> mem =
+          length > 0 ? memory_row<W, Quadrature>(m, y, hx, hy, length) : row;
+      for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
+    }
+    for (int i = -m; i <= m; ++i)
+      k_[static_cast<std::size_t>(i + m) +
+         static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
+          Real(W(compliance) * total[static_cast<std::size_t>(i + m)]);
+  }
+
   int nx_, ny_;
   std::vector<Real> k_;
 };

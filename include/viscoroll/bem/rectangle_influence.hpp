@@ -23,6 +23,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -60,7 +61,8 @@ Real gauss_sum_n(int n, G&& g) {
 
 /// Points of an n-point Gauss-Legendre rule needed for eps relative error on a panel of half
 /// length h whose integrand is analytic out to distance `dist` from the panel's centre: the error
-/// falls as rho^(-2n), rho = dist/h + sqrt((dist/h)^2 - 1) (Bernstein ellipse), plus one point.
+/// falls as rho^(-2n), rho = dist/h + sqrt((dist/h)^2 - 1) (Bernstein ellipse), plus one point:
+/// n = ceil(D / (2 ln rho)) + 1, D = -ln eps.
 template <class Real>
 int gauss_points_needed(Real dist_over_half_length) {
   using std::log;
@@ -69,6 +71,26 @@ int gauss_points_needed(Real dist_over_half_length) {
   const Real rho = q + sqrt(q * q - 1);
   const Real digits = -log(std::numeric_limits<Real>::epsilon());
   return static_cast<int>(std::ceil(static_cast<double>(digits / (2 * log(rho))))) + 1;
+}
+
+/// The rule of gauss_sum_n that gauss_points_needed(q) selects, without its logarithms (the
+/// table's hot path): n points suffice when rho >= e^(D / (2 (n - 1))), i.e. when
+/// q >= cosh(D / (2 (n - 1))); the thresholds of the rules 3 .. 16 are computed once.
+template <class Real>
+int gauss_rule_for(Real dist_over_half_length) {
+  static const std::array<Real, 8> threshold = [] {
+    using std::cosh;
+    using std::log;
+    const Real digits = -log(std::numeric_limits<Real>::epsilon());
+    std::array<Real, 8> t{};
+    const int rules[8] = {3, 4, 5, 6, 8, 10, 13, 16};
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = cosh(digits / (2 * Real(rules[k] - 1)));
+    return t;
+  }();
+  static constexpr int rules[8] = {3, 4, 5, 6, 8, 10, 13, 16};
+  for (std::size_t k = 0; k < threshold.size(); ++k)
+    if (dist_over_half_length >= threshold[k]) return rules[k];
+  return 24;
 }
 
 }  // namespace detail
@@ -124,8 +146,8 @@ Real rectangle_influence(Real x, Real y, Real hx, Real hy) {
   const Real dmin = sqrt(dx * dx + dy * dy);
   if (dmin < 2 * hmax) return rectangle_influence_closed_form(x, y, hx, hy);
   // (B2): the integrand's singularities lie at distance >= dmin + h/2 from each panel's centre.
-  const int nx = detail::gauss_points_needed<Real>((dmin + hx / 2) / (hx / 2));
-  const int ny = detail::gauss_points_needed<Real>((dmin + hy / 2) / (hy / 2));
+  const int nx = detail::gauss_rule_for<Real>((dmin + hx / 2) / (hx / 2));
+  const int ny = detail::gauss_rule_for<Real>((dmin + hy / 2) / (hy / 2));
   return detail::gauss_sum_n<Real>(nx,
                                    [&](Real sx) {
                                      const Real u = x - sx * hx / 2;
