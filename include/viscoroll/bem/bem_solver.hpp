@@ -20,6 +20,8 @@
 #include <concepts>
 #include <cstddef>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +29,7 @@
 #include <viscoroll/bem/hertz.hpp>
 #include <viscoroll/bem/influence_operator.hpp>
 #include <viscoroll/bem/rectangle_influence.hpp>
+#include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/material/generalized_maxwell.hpp>
@@ -83,7 +86,8 @@ class BemSolver {
   /// hx hy / R at the grid's diagonal R; the term goes when f_k times their ratio is <= eps. That
   /// covers L = +inf (speed x tau overflowed), where the recurrence (B4)-(B5) has no scale to
   /// step with.
-  std::vector<PronyTerm<Real>> effective_terms(const BemGrid<Real>& grid, Real speed) const {
+  static std::vector<PronyTerm<Real>> effective_terms(const BemGrid<Real>& grid, Real speed,
+                                                      const std::vector<PronyTerm<Real>>& all) {
     using std::abs;
     using std::log;
     using std::sqrt;
@@ -92,11 +96,12 @@ class BemSolver {
                                Real(grid.ny) * grid.hy * Real(grid.ny) * grid.hy);
     const Real h = std::min(grid.hx, grid.hy), shape = 10 + abs(log(grid.hx / grid.hy));
     std::vector<PronyTerm<Real>> kept;
-    for (const auto& t : bem::memory_terms_of(material_)) {
+    for (const auto& t : all) {
       const Real length = speed * t.tau;
       if (length > diagonal) {
         const Real u = diagonal / length;
-        if (!(u > 0) || t.f * u * (log(length / h) + shape) <= eps) continue;
+        // ln L - ln h, not ln(L/h): L/h overflows for L near the largest double (speed 1e308).
+        if (!(u > 0) || t.f * u * (log(length) - log(h) + shape) <= eps) continue;
       }
       kept.push_back(t);
     }
@@ -140,7 +145,7 @@ class BemSolver {
                                                const BemGrid<Real>& grid,
                                                const HertzContact<Real>& hertz,
                                                const std::vector<PronyTerm<Real>>& terms,
-                                               const Solution* start) const {
+                                               Real compliance, const Solution* start) const {
     const std::size_t n = grid.size();
     numerics::ActiveSetState<Real> state{
         .p = std::vector<Real>(n, Real(0)), .d = hertz.d, .active = std::vector<char>(n, 0)};
@@ -156,7 +161,7 @@ class BemSolver {
     Real weight = 0;
     for (const auto& t : terms) weight += t.f * hertz.a / (hertz.a + scene.speed * t.tau);
     const auto guess = hertz_contact(
-        scene.c1, scene.c2, (1 + weight) * material_.instantaneous_compliance(), scene.load);
+        scene.c1, scene.c2, (1 + weight) * compliance, scene.load);
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i) {
         const Real px = guess.pressure(grid.x(i), grid.y(j));
@@ -173,12 +178,12 @@ class BemSolver {
   Solution iterate(const BemScene<Real>& scene, const BemGrid<Real>& grid,
                    const HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
                    const std::vector<Complex>& symbol, const std::vector<PronyTerm<Real>>& terms,
-                   const Solution* start) const {
+                   Real compliance, int length_exponent, const Solution* start) const {
     std::vector<Real> h(grid.size());
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i)
         h[grid.index(i, j)] = scene.gap_profile(grid.x(i), grid.y(j));
-    auto state = initial_state(scene, grid, hertz, terms, start);
+    auto state = initial_state(scene, grid, hertz, terms, compliance, start);
     // The requested tolerance, but no tighter than the scalar allows (32 eps).
     const Real tol = std::max(Real(options_.tolerance), 32 * std::numeric_limits<Real>::epsilon());
     const auto report = numerics::active_set(
@@ -192,7 +197,7 @@ class BemSolver {
                                           .coarse_tolerance = Real(options_.coarse_tolerance)},
         state);
     Solution sol = measure(scene, grid, hertz, op, h, std::move(state), report);
-    judge(sol, scene, terms);
+    judge(sol, scene, terms, length_exponent);
     return sol;
   }
 
@@ -256,8 +261,8 @@ class BemSolver {
   /// gives no error bound, is not converged; a pressure front sharper than the grid leaves a(0)
   /// and b(0) unclaimed (a warning); a non-finite value makes the residual NaN and the solution
   /// not converged.
-  void judge(Solution& sol, const BemScene<Real>& scene,
-             const std::vector<PronyTerm<Real>>& terms) const {
+  void judge(Solution& sol, const BemScene<Real>& scene, const std::vector<PronyTerm<Real>>& terms,
+             int length_exponent) const {
     const auto& grid = sol.grid;
     // A contact spanning fewer than three cells across (on y = 0) or fewer than three rows has no
     // discretisation error bound (B13 assumes a few cells per semi-axis): the glassy contact of a
@@ -282,8 +287,9 @@ class BemSolver {
         const Real memory = scene.speed * t.tau;
         if (memory > grid.hx && memory / (1 + f_total) < grid.hx / 4) {
           sol.warnings.push_back(
-              "leading-edge layer V tau/(1 + f) = " + detail::format_value(memory / (1 + f_total)) +
-              " is under a quarter cell (hx = " + detail::format_value(grid.hx) +
+              "leading-edge layer V tau/(1 + f) = " +
+              detail::format_binary(memory / (1 + f_total), length_exponent) +
+              " is under a quarter cell (hx = " + detail::format_binary(grid.hx, length_exponent) +
               "): a0 and b0 are not resolved (d, chi and the load are)");
           break;
         }
@@ -360,6 +366,120 @@ class BemSolver {
     return {.a0 = (xl - xt) / 2, .b0 = (xl + xt) / 2, .l = l};
   }
 
+  /// The scene in the units of the solve (docs/bem.md, "Scaling"): lengths in 2^length,
+  /// pressures in 2^pressure, both powers of two, so that every product and quotient rounds as
+  /// in the caller's units wherever those neither overflow nor underflow (core/binary.hpp). The
+  /// unit of pressure makes the long-term compliance (1 + f) c lie in [1, 4); the unit of length
+  /// makes the long-term Hertz semi-axis a_H of order one (a_H^3 ~ (1 + f) c P / C1, (B8)). The
+  /// memory terms become (f_k, V tau_k / 2^length), their memory lengths in the units, at the
+  /// speed 1: an overflowed length is +inf (the glassy limit, dropped by effective_terms), an
+  /// underflowed one 0 (the long-term limit, (B3)).
+  struct Scaled {
+    BemScene<Real> scene;
+    Real compliance;                     ///< instantaneous c in the units
+    std::vector<PronyTerm<Real>> terms;  ///< (f_k, V tau_k) in the units
+    int length, pressure;                ///< binary exponents of the units
+    std::string inputs;                  ///< the inputs, for an error message
+  };
+
+  Scaled scaled(const BemScene<Real>& scene) const {
+    scene.validate();
+    const Real c = material_.instantaneous_compliance(), f = material_.creep_ratio();
+    const std::string inputs = "c1 = " + detail::format_value(scene.c1) +
+                               ", c2 = " + detail::format_value(scene.c2) +
+                               ", load = " + detail::format_value(scene.load) +
+                               ", speed = " + detail::format_value(scene.speed) +
+                               ", compliance (1 - nu)/(2 pi mu_D) = " + detail::format_value(c) +
+                               ", f = " + detail::format_value(f);
+    // As the plane solver: a compliance outside the normal range (mu_D near the largest or
+    // smallest double overflows or underflows (1 - nu)/(2 pi mu_D) in the material) is an error.
+    detail::representable(c, 0, "the instantaneous compliance c", [&] { return inputs; }, false);
+    detail::representable(1 + f, 0, "1 + f", [&] { return inputs; }, false);
+    const Binary<Real> bc = binary(c), bf = binary(1 + f), bp = binary(scene.load),
+                       b1 = binary(scene.c1), b2 = binary(scene.c2);
+    const int compliance_e = bc.e + bf.e;
+    const int sum = bp.e + compliance_e - b1.e;
+    const int length = sum >= 0 ? (sum + 1) / 3 : -((-sum + 1) / 3);
+    Scaled out{.scene = {.c1 = times_power_of_two(b1.m, b1.e + length),
+                         .c2 = times_power_of_two(b2.m, b2.e + length),
+                         .load = times_power_of_two(bp.m, bp.e + compliance_e - 2 * length),
+                         .speed = Real(1),
+                         .profile = {}},
+               .compliance = times_power_of_two(bc.m, -bf.e),
+               .terms = {},
+               .length = length,
+               .pressure = -compliance_e,
+               .inputs = inputs};
+    if (scene.profile) {
+      const auto& h = scene.profile;
+      out.scene.profile = [h, length](Real x, Real y) {
+        return times_power_of_two(
+            h(times_power_of_two(x, length), times_power_of_two(y, length)), -length);
+      };
+    }
+    const Binary<Real> bv = binary(scene.speed);
+    for (const auto& t : bem::memory_terms_of(material_)) {
+      const Binary<Real> bt = binary(t.tau);
+      out.terms.push_back(
+          PronyTerm<Real>{t.f, scene.speed == 0 || t.tau == 0
+                                   ? Real(0)
+                                   : times_power_of_two(bv.m * bt.m, bv.e + bt.e - length)});
+    }
+    return out;
+  }
+
+  /// The grid in the units of `u`.
+  BemGrid<Real> grid_in_units(const HertzContact<Real>& hertz) const {
+    const int n = options_.grid;
+    const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
+    return {2 * m + 1, 2 * m + 1, hertz.a / Real(n), hertz.b / Real(n)};
+  }
+
+  /// Hertz's long-term contact (B8) in the units of `u`.
+  static HertzContact<Real> hertz_in_units(const Scaled& u, Real creep_ratio) {
+    return hertz_contact(u.scene.c1, u.scene.c2, (1 + creep_ratio) * u.compliance, u.scene.load);
+  }
+
+  /// A start solution in the caller's units, in the units of `u` (or null).
+  static std::optional<Solution> start_in_units(const Solution* start, const Scaled& u) {
+    if (start == nullptr) return std::nullopt;
+    Solution s = *start;
+    for (auto& p : s.pressure) p = times_power_of_two(p, -u.pressure);
+    s.load = times_power_of_two(times_power_of_two(s.load, -u.pressure), -2 * u.length);
+    s.d = times_power_of_two(s.d, -u.length);
+    if (!(s.load > 0) || !(boost::math::isfinite)(s.load) || !(boost::math::isfinite)(s.d))
+      return std::nullopt;
+    return s;
+  }
+
+  /// The solution of the units of `u` in the caller's units. A converged solution's d, a(0), l,
+  /// peak pressure and load must be normal numbers there, else an error names them and the
+  /// inputs.
+  static void to_caller_units(Solution& s, const Scaled& u) {
+    const int k = u.length, pe = u.pressure;
+    Real pmax = 0;
+    for (const Real p : s.pressure) pmax = std::max(pmax, p);
+    const auto inputs = [&] { return u.inputs; };
+    if (s.converged) {
+      detail::representable(s.d, k, "the penetration d", inputs, false);
+      detail::representable(s.a0, k, "a(0)", inputs, false);
+      detail::representable(s.l, k, "l", inputs, false);
+      detail::representable(pmax, pe, "the peak pressure", inputs, false);
+      detail::representable(times_power_of_two(s.load, 2 * k), pe, "the load", inputs, false);
+    }
+    for (auto& p : s.pressure) p = times_power_of_two(p, pe);
+    for (auto& g : s.gap) g = times_power_of_two(g, k);
+    s.grid.hx = times_power_of_two(s.grid.hx, k);
+    s.grid.hy = times_power_of_two(s.grid.hy, k);
+    s.d = times_power_of_two(s.d, k);
+    s.a0 = times_power_of_two(s.a0, k);
+    s.b0 = times_power_of_two(s.b0, k);
+    s.l = times_power_of_two(s.l, k);
+    s.load = times_power_of_two(times_power_of_two(s.load, 2 * k), pe);
+    s.long_term = {times_power_of_two(s.long_term.a, k), times_power_of_two(s.long_term.b, k),
+                   times_power_of_two(s.long_term.d, k), times_power_of_two(s.long_term.p0, pe)};
+  }
+
   Material material_;
   BemOptions options_;
 };
@@ -370,18 +490,23 @@ requires std::same_as<typename Material::real_type, Real> &&
 auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
                                                   const Solution* start) const -> Solution {
   using clock = std::chrono::steady_clock;
-  scene.validate();
   const auto t0 = clock::now();
-  const auto hertz = long_term_hertz(scene);
-  const auto grid = grid_for(scene);
-  if (scene.profile) validate_profile(scene, grid);
-  const auto terms = effective_terms(grid, scene.speed);
-  const Real c = material_.instantaneous_compliance();
-  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, scene.speed, options_.threads);
+  const Scaled u = scaled(scene);
+  const auto hertz = hertz_in_units(u, material_.creep_ratio());
+  const auto grid = grid_in_units(hertz);
+  if (u.scene.profile) validate_profile(u.scene, grid);
+  const auto terms = effective_terms(grid, u.scene.speed, u.terms);
+  const Real c = u.compliance;
+  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, u.scene.speed,
+                                                    options_.threads);
   const bem::ConvolutionOperator<Real> op(table);
-  const std::vector<Complex> symbol = bem::preconditioner_symbol(grid, op, c, terms, scene.speed);
+  const std::vector<Complex> symbol =
+      bem::preconditioner_symbol(grid, op, c, terms, u.scene.speed);
   const double setup = std::chrono::duration<double>(clock::now() - t0).count();
-  Solution sol = iterate(scene, grid, hertz, op, symbol, terms, start);
+  const auto seed = start_in_units(start, u);
+  Solution sol = iterate(u.scene, grid, hertz, op, symbol, terms, c, u.length,
+                         seed ? &*seed : nullptr);
+  to_caller_units(sol, u);
   sol.seconds_setup = setup;
   sol.seconds_solve = std::chrono::duration<double>(clock::now() - t0).count() - setup;
   return sol;
@@ -392,10 +517,12 @@ requires std::same_as<typename Material::real_type, Real> &&
     NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
 auto BemSolver<Real, Material, Quadrature>::grid_for(const BemScene<Real>& scene) const
     -> BemGrid<Real> {
-  const auto h = long_term_hertz(scene);
-  const int n = options_.grid;
-  const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
-  return {2 * m + 1, 2 * m + 1, h.a / Real(n), h.b / Real(n)};
+  const Scaled u = scaled(scene);
+  BemGrid<Real> g = grid_in_units(hertz_in_units(u, material_.creep_ratio()));
+  const auto inputs = [&] { return u.inputs; };
+  g.hx = detail::representable(g.hx, u.length, "the cell width hx", inputs, false);
+  g.hy = detail::representable(g.hy, u.length, "the cell length hy", inputs, false);
+  return g;
 }
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
@@ -403,10 +530,13 @@ requires std::same_as<typename Material::real_type, Real> &&
     NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
 auto BemSolver<Real, Material, Quadrature>::long_term_hertz(const BemScene<Real>& scene) const
     -> HertzContact<Real> {
-  scene.validate();
-  return hertz_contact(scene.c1, scene.c2,
-                       (1 + material_.creep_ratio()) * material_.instantaneous_compliance(),
-                       scene.load);
+  const Scaled u = scaled(scene);
+  const HertzContact<Real> h = hertz_in_units(u, material_.creep_ratio());
+  const auto inputs = [&] { return u.inputs; };
+  return {detail::representable(h.a, u.length, "the long-term Hertz semi-axis a", inputs, false),
+          detail::representable(h.b, u.length, "the long-term Hertz semi-axis b", inputs, false),
+          detail::representable(h.d, u.length, "the long-term Hertz penetration", inputs, false),
+          detail::representable(h.p0, u.pressure, "the long-term Hertz pressure", inputs, false)};
 }
 
 /// The scalar deduced from the material: BemSolver solver(GeneralizedMaxwell<double>(...)).
