@@ -127,3 +127,30 @@ TEST_CASE("cli: viscoroll-solve --method line prints the domain warning on stder
   CHECK(ok.err.empty());
   CHECK(ok.out.find("\"warnings\":[]") != std::string::npos);
 }
+
+TEST_CASE("cli: viscoroll-solve --method bem solves the extreme scenes of issue 24 or names them",
+          "[cli][bem]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // Answers that are representable: converged, finite (no inf, nan or null), exit 0.
+  for (const auto& changes : std::vector<std::vector<std::string>>{
+           {"--speed=1e308", "--grid=8", "--load=1", "--c2=0.0798291"},
+           {"--load=1e308", "--grid=8", "--c2=0.0798291"},
+           {"--mu-d=1e-308", "--grid=8", "--load=1", "--c2=0.0798291"}}) {
+    const auto r = run(arguments(changes));
+    INFO("viscoroll-solve " << arguments(changes) << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.status == 0);
+    CHECK(r.out.find("\"converged\":true") != std::string::npos);
+    CHECK(r.out.find("nan") == std::string::npos);
+    CHECK(r.out.find("inf") == std::string::npos);
+    CHECK(r.out.find("null") == std::string::npos);
+  }
+  // mu_D = 1e308: the compliance underflows to 0 in the material: exit 2, the quantity and the
+  // inputs named, nothing on stdout.
+  const auto r = run(arguments({"--mu-d=1e308", "--grid=8", "--load=1"}));
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.find("viscoroll: the instantaneous compliance c = 0 is below the smallest normal "
+                   "number") != std::string::npos);
+  CHECK(r.err.find("rescale the units") != std::string::npos);
+}

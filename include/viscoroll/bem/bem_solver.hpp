@@ -85,7 +85,7 @@ class BemSolver {
   /// tests/bem/rectangle_influence.test.cpp), against an elastic coefficient of at least about
   /// hx hy / R at the grid's diagonal R; the term goes when f_k times their ratio is <= eps. That
   /// covers L = +inf (speed x tau overflowed), where the recurrence (B4)-(B5) has no scale to
-  /// step with.
+  /// step with. A term whose L is under eps hx takes L = 0 (the long-term limit, below).
   static std::vector<PronyTerm<Real>> effective_terms(const BemGrid<Real>& grid, Real speed,
                                                       const std::vector<PronyTerm<Real>>& all) {
     using std::abs;
@@ -102,6 +102,13 @@ class BemSolver {
         const Real u = diagonal / length;
         // ln L - ln h, not ln(L/h): L/h overflows for L near the largest double (speed 1e308).
         if (!(u > 0) || t.f * u * (log(length) - log(h) + shape) <= eps) continue;
+      }
+      // A memory length under eps hx is the long-term limit M_L = K_e + O((L/hx) ln(hx/L))
+      // (B3): the recurrence (B4) cannot step with it (its panels round to zero width), so the
+      // term takes L = 0, which the table evaluates as K_e exactly.
+      if (length > 0 && length < eps * grid.hx) {
+        kept.push_back(PronyTerm<Real>{t.f, Real(0)});
+        continue;
       }
       kept.push_back(t);
     }
@@ -366,19 +373,21 @@ class BemSolver {
     return {.a0 = (xl - xt) / 2, .b0 = (xl + xt) / 2, .l = l};
   }
 
-  /// The scene in the units of the solve (docs/bem.md, "Scaling"): lengths in 2^length,
-  /// pressures in 2^pressure, both powers of two, so that every product and quotient rounds as
-  /// in the caller's units wherever those neither overflow nor underflow (core/binary.hpp). The
-  /// unit of pressure makes the long-term compliance (1 + f) c lie in [1, 4); the unit of length
-  /// makes the long-term Hertz semi-axis a_H of order one (a_H^3 ~ (1 + f) c P / C1, (B8)). The
-  /// memory terms become (f_k, V tau_k / 2^length), their memory lengths in the units, at the
-  /// speed 1: an overflowed length is +inf (the glassy limit, dropped by effective_terms), an
-  /// underflowed one 0 (the long-term limit, (B3)).
+  /// The scene in the units of the solve (docs/bem.md, "Scaling"): lengths in the surface
+  /// plane in 2^length, displacements (d, the gap, the profile) in 2^displacement, pressures in
+  /// 2^pressure, all powers of two, so that every product and quotient rounds as in the caller's
+  /// units wherever those neither overflow nor underflow (core/binary.hpp). The displacement
+  /// unit makes C1 lie in [1, 2) (displacement = 2 length + exponent of C1: d ~ C1 a^2); the
+  /// pressure unit makes the long-term compliance (1 + f) c lie in [1, 4); the length unit makes
+  /// the long-term Hertz semi-axis a_H of order one (a_H^3 ~ (1 + f) c P / C1, (B8)). The memory
+  /// terms become (f_k, V tau_k / 2^length), their memory lengths in the units, at the speed 1:
+  /// an overflowed length is +inf (the glassy limit, dropped by effective_terms), one under
+  /// eps hx the long-term limit.
   struct Scaled {
     BemScene<Real> scene;
     Real compliance;                     ///< instantaneous c in the units
     std::vector<PronyTerm<Real>> terms;  ///< (f_k, V tau_k) in the units
-    int length, pressure;                ///< binary exponents of the units
+    int length, displacement, pressure;  ///< binary exponents of the units
     std::string inputs;                  ///< the inputs, for an error message
   };
 
@@ -400,21 +409,28 @@ class BemSolver {
     const int compliance_e = bc.e + bf.e;
     const int sum = bp.e + compliance_e - b1.e;
     const int length = sum >= 0 ? (sum + 1) / 3 : -((-sum + 1) / 3);
-    Scaled out{.scene = {.c1 = times_power_of_two(b1.m, b1.e + length),
-                         .c2 = times_power_of_two(b2.m, b2.e + length),
-                         .load = times_power_of_two(bp.m, bp.e + compliance_e - 2 * length),
+    // u = c K p (K a length) in units: c' = c 2^(length + pressure - displacement), which is
+    // c 2^(-compliance_e) with pressure = displacement - length - compliance_e; the load
+    // P = 2^(pressure + 2 length) P'; the gap C1 x^2/2 = 2^displacement (C1 2^(2 length -
+    // displacement)) x'^2/2.
+    const int displacement = 2 * length + b1.e;
+    const int pressure = displacement - length - compliance_e;
+    Scaled out{.scene = {.c1 = b1.m,
+                         .c2 = times_power_of_two(b2.m, b2.e - b1.e),
+                         .load = times_power_of_two(bp.m, bp.e - pressure - 2 * length),
                          .speed = Real(1),
                          .profile = {}},
                .compliance = times_power_of_two(bc.m, -bf.e),
                .terms = {},
                .length = length,
-               .pressure = -compliance_e,
+               .displacement = displacement,
+               .pressure = pressure,
                .inputs = inputs};
     if (scene.profile) {
       const auto& h = scene.profile;
-      out.scene.profile = [h, length](Real x, Real y) {
+      out.scene.profile = [h, length, displacement](Real x, Real y) {
         return times_power_of_two(
-            h(times_power_of_two(x, length), times_power_of_two(y, length)), -length);
+            h(times_power_of_two(x, length), times_power_of_two(y, length)), -displacement);
       };
     }
     const Binary<Real> bv = binary(scene.speed);
@@ -445,8 +461,8 @@ class BemSolver {
     if (start == nullptr) return std::nullopt;
     Solution s = *start;
     for (auto& p : s.pressure) p = times_power_of_two(p, -u.pressure);
-    s.load = times_power_of_two(times_power_of_two(s.load, -u.pressure), -2 * u.length);
-    s.d = times_power_of_two(s.d, -u.length);
+    s.load = times_power_of_two(s.load, -u.pressure - 2 * u.length);
+    s.d = times_power_of_two(s.d, -u.displacement);
     if (!(s.load > 0) || !(boost::math::isfinite)(s.load) || !(boost::math::isfinite)(s.d))
       return std::nullopt;
     return s;
@@ -456,28 +472,31 @@ class BemSolver {
   /// peak pressure and load must be normal numbers there, else an error names them and the
   /// inputs.
   static void to_caller_units(Solution& s, const Scaled& u) {
-    const int k = u.length, pe = u.pressure;
+    const int k = u.length, w = u.displacement, pe = u.pressure;
     Real pmax = 0;
     for (const Real p : s.pressure) pmax = std::max(pmax, p);
     const auto inputs = [&] { return u.inputs; };
     if (s.converged) {
-      detail::representable(s.d, k, "the penetration d", inputs, false);
+      detail::representable(s.d, w, "the penetration d", inputs, false);
       detail::representable(s.a0, k, "a(0)", inputs, false);
       detail::representable(s.l, k, "l", inputs, false);
       detail::representable(pmax, pe, "the peak pressure", inputs, false);
-      detail::representable(times_power_of_two(s.load, 2 * k), pe, "the load", inputs, false);
+      detail::representable(s.load, 2 * k + pe, "the load", inputs, false);
+      detail::representable(s.chi, w - k, "chi", inputs);
     }
     for (auto& p : s.pressure) p = times_power_of_two(p, pe);
-    for (auto& g : s.gap) g = times_power_of_two(g, k);
+    for (auto& g : s.gap) g = times_power_of_two(g, w);
     s.grid.hx = times_power_of_two(s.grid.hx, k);
     s.grid.hy = times_power_of_two(s.grid.hy, k);
-    s.d = times_power_of_two(s.d, k);
+    s.d = times_power_of_two(s.d, w);
     s.a0 = times_power_of_two(s.a0, k);
     s.b0 = times_power_of_two(s.b0, k);
     s.l = times_power_of_two(s.l, k);
-    s.load = times_power_of_two(times_power_of_two(s.load, 2 * k), pe);
+    // chi = C1 x_mean = (C1' 2^(w - 2k)) (x_mean' 2^k).
+    s.chi = times_power_of_two(s.chi, w - k);
+    s.load = times_power_of_two(s.load, 2 * k + pe);
     s.long_term = {times_power_of_two(s.long_term.a, k), times_power_of_two(s.long_term.b, k),
-                   times_power_of_two(s.long_term.d, k), times_power_of_two(s.long_term.p0, pe)};
+                   times_power_of_two(s.long_term.d, w), times_power_of_two(s.long_term.p0, pe)};
   }
 
   Material material_;
@@ -535,7 +554,8 @@ auto BemSolver<Real, Material, Quadrature>::long_term_hertz(const BemScene<Real>
   const auto inputs = [&] { return u.inputs; };
   return {detail::representable(h.a, u.length, "the long-term Hertz semi-axis a", inputs, false),
           detail::representable(h.b, u.length, "the long-term Hertz semi-axis b", inputs, false),
-          detail::representable(h.d, u.length, "the long-term Hertz penetration", inputs, false),
+          detail::representable(h.d, u.displacement, "the long-term Hertz penetration", inputs,
+                                false),
           detail::representable(h.p0, u.pressure, "the long-term Hertz pressure", inputs, false)};
 }
 
