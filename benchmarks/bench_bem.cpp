@@ -1,15 +1,17 @@
 // The boundary-element solver on the paper's scene (f = 9, 5:1, line-contact a0 = 1) at
 // V tau / a0 = 1: one complete solve (influence table, its transform, active-set iteration) per
-// grid N (elements per semi-axis of the static Hertz ellipse). Target (issue 4): d and chi
-// grid-converged to 0.1% in under 10 s on one core; docs/bem.md shows that N = 16 is (d and chi
-// within 0.05% of N = 64). Counters: d, chi, a(0), active-set and GMRES iterations.
+// grid N (elements per semi-axis of the static Hertz ellipse) and thread count of the table.
+// Targets (issue 22): on one core N = 16 under 40 ms, N = 32 under 0.2 s, N = 64 under 1 s; the
+// 1,000,000-cell grid (N = 312) under 60 s with threads. Counters: d, chi, a(0), active-set and
+// GMRES iterations, the solver's set-up and iteration seconds. The environment variable
+// VISCOROLL_BEM_COARSE sets BemOptions::coarse_tolerance (0: every active set solved to the
+// tolerance, the GMRES steps without inexact early solves).
 //
-// BM_bem_apply: one application of the convolution operator u = K * p of (B6)-(B7) (two 2-D
-// FFTs of the zero-padded grid, Eigen's FFT with the kissfft back end, and the product with the
-// kernel's spectrum), for float, double and long double (the scalars Eigen's kissfft back end
-// transforms; the coefficients themselves are computed in at least double, coefficient_real_t),
-// at N = 8, 16, 32, 64 elements per semi-axis (grid (2 ceil(1.6 N) + 1)^2 cells). The cost does
-// not depend on the coefficients' values; the elastic table (B1)-(B2) is used.
+// BM_bem_apply: one application of the convolution operator u = K * p of (B6)-(B7) (the
+// real-to-complex 2-D FFT of the zero-padded grid and its inverse, FFTW where the build found it,
+// else Eigen's kissfft, and the product with the kernel's half spectrum), for float, double and
+// long double, at N = 8, 16, 32, 64 elements per semi-axis (grid (2 ceil(1.6 N) + 1)^2 cells).
+// The cost does not depend on the coefficients' values; the elastic table is used.
 //
 // BM_bem_setup: the influence table (B6) with its memory rows (B3)-(B5) and its transform (B7),
 // the BemSolver's set-up, for the elastic material and the standard linear solid (f = 9) at

@@ -137,7 +137,8 @@ TEST_CASE("cli: viscoroll-solve --method bem solves the extreme scenes of issue 
            {"--load=1e308", "--grid=8", "--c2=0.0798291"},
            {"--mu-d=1e-308", "--grid=8", "--load=1", "--c2=0.0798291"}}) {
     const auto r = run(arguments(changes));
-    INFO("viscoroll-solve " << arguments(changes) << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    INFO("viscoroll-solve " << arguments(changes) << "\nstdout: " << r.out
+                            << "\nstderr: " << r.err);
     CHECK(r.status == 0);
     CHECK(r.out.find("\"converged\":true") != std::string::npos);
     CHECK(r.out.find("nan") == std::string::npos);

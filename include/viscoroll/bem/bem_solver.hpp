@@ -48,7 +48,8 @@ namespace viscoroll {
 ///   - grid_for(scene): the grid solve() uses; long_term_hertz(scene): Hertz's contact of the
 ///     long-term compliance (B8), which sizes it;
 ///   - material(), options(): what the solver was built with.
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature = bem::MemoryPanelRule<Real>>
+template <RealScalar Real, ConstitutiveModel Material,
+          class Quadrature = bem::MemoryPanelRule<Real>>
 requires std::same_as<typename Material::real_type, Real> &&
     NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
 class BemSolver {
@@ -167,8 +168,7 @@ class BemSolver {
     }
     Real weight = 0;
     for (const auto& t : terms) weight += t.f * hertz.a / (hertz.a + scene.speed * t.tau);
-    const auto guess = hertz_contact(
-        scene.c1, scene.c2, (1 + weight) * compliance, scene.load);
+    const auto guess = hertz_contact(scene.c1, scene.c2, (1 + weight) * compliance, scene.load);
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i) {
         const Real px = guess.pressure(grid.x(i), grid.y(j));
@@ -402,8 +402,10 @@ class BemSolver {
                                ", f = " + detail::format_value(f);
     // As the plane solver: a compliance outside the normal range (mu_D near the largest or
     // smallest double overflows or underflows (1 - nu)/(2 pi mu_D) in the material) is an error.
-    detail::representable(c, 0, "the instantaneous compliance c", [&] { return inputs; }, false);
-    detail::representable(1 + f, 0, "1 + f", [&] { return inputs; }, false);
+    detail::representable(
+        c, 0, "the instantaneous compliance c", [&] { return inputs; }, false);
+    detail::representable(
+        1 + f, 0, "1 + f", [&] { return inputs; }, false);
     const Binary<Real> bc = binary(c), bf = binary(1 + f), bp = binary(scene.load),
                        b1 = binary(scene.c1), b2 = binary(scene.c2);
     const int compliance_e = bc.e + bf.e;
@@ -429,8 +431,8 @@ class BemSolver {
     if (scene.profile) {
       const auto& h = scene.profile;
       out.scene.profile = [h, length, displacement](Real x, Real y) {
-        return times_power_of_two(
-            h(times_power_of_two(x, length), times_power_of_two(y, length)), -displacement);
+        return times_power_of_two(h(times_power_of_two(x, length), times_power_of_two(y, length)),
+                                  -displacement);
       };
     }
     const Binary<Real> bv = binary(scene.speed);
@@ -519,12 +521,11 @@ auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
   const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, u.scene.speed,
                                                     options_.threads);
   const bem::ConvolutionOperator<Real> op(table);
-  const std::vector<Complex> symbol =
-      bem::preconditioner_symbol(grid, op, c, terms, u.scene.speed);
+  const std::vector<Complex> symbol = bem::preconditioner_symbol(grid, op, c, terms, u.scene.speed);
   const double setup = std::chrono::duration<double>(clock::now() - t0).count();
   const auto seed = start_in_units(start, u);
-  Solution sol = iterate(u.scene, grid, hertz, op, symbol, terms, c, u.length,
-                         seed ? &*seed : nullptr);
+  Solution sol =
+      iterate(u.scene, grid, hertz, op, symbol, terms, c, u.length, seed ? &*seed : nullptr);
   to_caller_units(sol, u);
   sol.seconds_setup = setup;
   sol.seconds_solve = std::chrono::duration<double>(clock::now() - t0).count() - setup;
@@ -552,11 +553,11 @@ auto BemSolver<Real, Material, Quadrature>::long_term_hertz(const BemScene<Real>
   const Scaled u = scaled(scene);
   const HertzContact<Real> h = hertz_in_units(u, material_.creep_ratio());
   const auto inputs = [&] { return u.inputs; };
-  return {detail::representable(h.a, u.length, "the long-term Hertz semi-axis a", inputs, false),
-          detail::representable(h.b, u.length, "the long-term Hertz semi-axis b", inputs, false),
-          detail::representable(h.d, u.displacement, "the long-term Hertz penetration", inputs,
-                                false),
-          detail::representable(h.p0, u.pressure, "the long-term Hertz pressure", inputs, false)};
+  return {
+      detail::representable(h.a, u.length, "the long-term Hertz semi-axis a", inputs, false),
+      detail::representable(h.b, u.length, "the long-term Hertz semi-axis b", inputs, false),
+      detail::representable(h.d, u.displacement, "the long-term Hertz penetration", inputs, false),
+      detail::representable(h.p0, u.pressure, "the long-term Hertz pressure", inputs, false)};
 }
 
 /// The scalar deduced from the material: BemSolver solver(GeneralizedMaxwell<double>(...)).

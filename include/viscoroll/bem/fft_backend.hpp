@@ -114,35 +114,35 @@ class EigenTransform {
 template <class Real>
 struct Fftw;
 
-#define VISCOROLL_FFTW_API(REAL, P)                                                              \
-  template <>                                                                                    \
-  struct Fftw<REAL> {                                                                            \
-    using plan = P##plan;                                                                        \
-    using complex = P##complex;                                                                  \
-    static void* malloc(std::size_t n) { return P##malloc(n); }                                  \
-    static void free(void* p) { P##free(p); }                                                    \
-    static plan r2c(int n, int howmany, REAL* in, complex* out, int odist, unsigned flags) {     \
-      return P##plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, odist,     \
-                                  flags);                                                        \
-    }                                                                                            \
-    static plan c2r(int n, int howmany, complex* in, REAL* out, int idist, unsigned flags) {     \
-      return P##plan_many_dft_c2r(1, &n, howmany, in, nullptr, 1, idist, out, nullptr, 1, n,     \
-                                  flags);                                                        \
-    }                                                                                            \
-    /* Columns: n points at stride `howmany`, `howmany` of them at distance 1, in place. */      \
-    static plan columns(int n, int howmany, complex* a, int sign, unsigned flags) {              \
-      return P##plan_many_dft(1, &n, howmany, a, nullptr, howmany, 1, a, nullptr, howmany, 1,    \
-                              sign, flags);                                                      \
-    }                                                                                            \
-    static void execute_r2c(const plan p, REAL* in, complex* out) {                              \
-      P##execute_dft_r2c(p, in, out);                                                            \
-    }                                                                                            \
-    static void execute_c2r(const plan p, complex* in, REAL* out) {                              \
-      P##execute_dft_c2r(p, in, out);                                                            \
-    }                                                                                            \
-    static void execute_dft(const plan p, complex* in, complex* out) {                           \
-      P##execute_dft(p, in, out);                                                                \
-    }                                                                                            \
+#define VISCOROLL_FFTW_API(REAL, P)                                                           \
+  template <>                                                                                 \
+  struct Fftw<REAL> {                                                                         \
+    using plan = P##plan;                                                                     \
+    using complex = P##complex;                                                               \
+    static void* malloc(std::size_t n) { return P##malloc(n); }                               \
+    static void free(void* p) { P##free(p); }                                                 \
+    static plan r2c(int n, int howmany, REAL* in, complex* out, int odist, unsigned flags) {  \
+      return P##plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, odist,  \
+                                  flags);                                                     \
+    }                                                                                         \
+    static plan c2r(int n, int howmany, complex* in, REAL* out, int idist, unsigned flags) {  \
+      return P##plan_many_dft_c2r(1, &n, howmany, in, nullptr, 1, idist, out, nullptr, 1, n,  \
+                                  flags);                                                     \
+    }                                                                                         \
+    /* Columns: n points at stride `howmany`, `howmany` of them at distance 1, in place. */   \
+    static plan columns(int n, int howmany, complex* a, int sign, unsigned flags) {           \
+      return P##plan_many_dft(1, &n, howmany, a, nullptr, howmany, 1, a, nullptr, howmany, 1, \
+                              sign, flags);                                                   \
+    }                                                                                         \
+    static void execute_r2c(const plan p, REAL* in, complex* out) {                           \
+      P##execute_dft_r2c(p, in, out);                                                         \
+    }                                                                                         \
+    static void execute_c2r(const plan p, complex* in, REAL* out) {                           \
+      P##execute_dft_c2r(p, in, out);                                                         \
+    }                                                                                         \
+    static void execute_dft(const plan p, complex* in, complex* out) {                        \
+      P##execute_dft(p, in, out);                                                             \
+    }                                                                                         \
   };
 
 VISCOROLL_FFTW_API(double, fftw_)
@@ -194,8 +194,8 @@ struct FftwPlans {
     p.columns_forward = F::columns(nfy, nfxh, spec.get(), FFTW_FORWARD, flags);
     p.columns_inverse = F::columns(nfy, nfxh, spec.get(), FFTW_BACKWARD, flags);
     p.rows_inverse = F::c2r(nfx, rows, spec.get(), real.get(), nfxh, flags);
-    if (p.rows_forward == nullptr || p.columns_forward == nullptr ||
-        p.columns_inverse == nullptr || p.rows_inverse == nullptr)
+    if (p.rows_forward == nullptr || p.columns_forward == nullptr || p.columns_inverse == nullptr ||
+        p.rows_inverse == nullptr)
       throw std::bad_alloc();
     return cache.emplace(key, p).first->second;
   }

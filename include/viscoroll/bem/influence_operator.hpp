@@ -19,8 +19,8 @@
 #include <complex>
 #include <cstddef>
 #include <exception>
-#include <thread>
 #include <memory>
+#include <thread>
 #include <vector>
 #include <viscoroll/bem/bem_scene.hpp>
 #include <viscoroll/bem/fft_backend.hpp>
@@ -127,8 +127,7 @@ class InfluenceTable {
     for (const auto& t : terms) {
       const W length = W(speed) * W(t.tau);
       // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4).
-      const std::vector<W> mem =
-          length > 0 ? memory_row<W, Quadrature>(m, y, hx, hy, length) : row;
+      const std::vector<W> mem = length > 0 ? memory_row<W, Quadrature>(m, y, hx, hy, length) : row;
       for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
     }
     for (int i = -m; i <= m; ++i)
@@ -169,7 +168,11 @@ class ConvolutionOperator {
         kernel_(kernel_spectrum(table, nfx_, nfy_)) {}
 
   ConvolutionOperator(const ConvolutionOperator& o)
-      : nx_(o.nx_), ny_(o.ny_), nfx_(o.nfx_), nfy_(o.nfy_), fft_(o.nfx_, o.nfy_, o.ny_),
+      : nx_(o.nx_),
+        ny_(o.ny_),
+        nfx_(o.nfx_),
+        nfy_(o.nfy_),
+        fft_(o.nfx_, o.nfy_, o.ny_),
         kernel_(o.kernel_) {}
   ConvolutionOperator& operator=(const ConvolutionOperator&) = delete;
 
@@ -280,8 +283,8 @@ std::vector<std::complex<Real>> preconditioner_symbol(const BemGrid<Real>& grid,
       const Real k = std::max(sqrt(qx * qx + qy * qy), kmin);
       Complex memory(1);
       for (const auto& t : terms) memory += t.f / Complex(1, -kx * speed * t.tau);
-      s[static_cast<std::size_t>(m) + static_cast<std::size_t>(nfxh) * static_cast<std::size_t>(n)] =
-          k / (2 * pi * c * memory);
+      s[static_cast<std::size_t>(m) +
+        static_cast<std::size_t>(nfxh) * static_cast<std::size_t>(n)] = k / (2 * pi * c * memory);
     }
   return s;
 }
