@@ -45,7 +45,8 @@ Row bem(int n, double vtau) {
   o.grid = n;
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
   const auto start = std::chrono::steady_clock::now();
-  const auto s = solver.solve(viscoroll::BemScene<double>{c1, c2, load, vtau});
+  const auto s =
+      solver.solve(viscoroll::BemScene<double>{.c1 = c1, .c2 = c2, .load = load, .speed = vtau});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!s.converged)
@@ -116,7 +117,8 @@ int main(int argc, char** argv) {
               "BEM finest: a(0) b(0) l d chi", "Richardson a(0) b(0) l d chi");
   for (const double vtau : speeds) {
     const LineSolution* seed = last && last->converged ? &*last : nullptr;
-    LineSolution ls = line.solve(viscoroll::LineScene<double>{c1, c2, load, vtau}, seed);
+    LineSolution ls = line.solve(
+        viscoroll::LineScene<double>{.c1 = c1, .c2 = c2, .load = load, .speed = vtau}, seed);
     if (!ls.converged) ++failures;
     csv << vtau << ',' << ls.a(0.0) << ',' << ls.b(0.0) << ',' << ls.l() << ',' << ls.d << ','
         << ls.chi << ',' << ls.converged;

@@ -36,8 +36,8 @@ void BM_bem_paper_scene(benchmark::State& state) {
   o.threads = static_cast<int>(state.range(1));
   if (const char* e = std::getenv("VISCOROLL_BEM_COARSE")) o.coarse_tolerance = std::atof(e);
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
-  const viscoroll::BemScene<double> scene{1.0, (std::log(20.0) - 1) / 25, 5.0 / (3 * (1 + f) * c),
-                                          1.0};
+  const viscoroll::BemScene<double> scene{
+      .c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 5.0 / (3 * (1 + f) * c), .speed = 1.0};
   viscoroll::BemSolution<double> s;
   for (auto _ : state) {
     s = solver.solve(scene);
@@ -63,8 +63,10 @@ viscoroll::BemGrid<Real> paper_grid(const Material& material, int n, double f) {
   viscoroll::BemOptions o;
   o.grid = n;
   const double c = (1 - 0.5) / (2 * std::acos(-1.0));
-  const viscoroll::BemScene<Real> scene{Real(1), Real((std::log(20.0) - 1) / 25),
-                                        Real(5.0 / (3 * (1 + f) * c)), Real(1)};
+  const viscoroll::BemScene<Real> scene{.c1 = Real(1),
+                                        .c2 = Real((std::log(20.0) - 1) / 25),
+                                        .load = Real(5.0 / (3 * (1 + f) * c)),
+                                        .speed = Real(1)};
   return viscoroll::BemSolver<Real, Material>(material, o).grid_for(scene);
 }
 

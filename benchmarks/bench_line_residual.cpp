@@ -20,7 +20,10 @@ namespace {
 template <class Real>
 viscoroll::LineScene<Real> paper_scene(Real f, Real c) {
   using std::log;
-  return {Real(1), (log(Real(20)) - 1) / 25, 5 / (3 * (1 + f) * c), Real(1)};
+  return {.c1 = Real(1),
+          .c2 = (log(Real(20)) - 1) / 25,
+          .load = 5 / (3 * (1 + f) * c),
+          .speed = Real(1)};
 }
 
 template <class Real>

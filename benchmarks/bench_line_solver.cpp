@@ -20,7 +20,7 @@ const viscoroll::StandardLinearSolid<double> kRubber(1, 0.5, 9, 1);  // tau = 1:
 
 viscoroll::LineScene<double> paper_scene(double vtau) {
   const double load = 5.0 / (3 * (1 + 9) * kRubber.instantaneous_compliance());  // a0 = 1
-  return {1.0, (std::log(20.0) - 1) / 25, load, vtau};
+  return {.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = load, .speed = vtau};
 }
 
 void solve_once(benchmark::State& state, viscoroll::LineJacobian jacobian) {

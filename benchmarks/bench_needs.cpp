@@ -41,7 +41,8 @@ template <class Real, class Material>
 void plane_solve(benchmark::State& state, const Material& material, Real f) {
   const Real c = material.instantaneous_compliance();
   const viscoroll::PlaneSolver<Real, Material> solver(material);
-  const viscoroll::PlaneScene<Real> scene{Real(1), 1 / (4 * c * (1 + f)), Real(1)};
+  const viscoroll::PlaneScene<Real> scene{
+      .c1 = Real(1), .load = 1 / (4 * c * (1 + f)), .speed = Real(1)};
   auto s = solver.solve(scene);
   for (auto _ : state) {
     s = solver.solve(scene);
@@ -75,8 +76,10 @@ void line_solve(benchmark::State& state, const Material& material, Real f, int t
   viscoroll::LineOptions options;
   options.terms = terms;
   const viscoroll::LineSolver<Real, Material> solver(material, options);
-  const viscoroll::LineScene<Real> scene{Real(1), (log(Real(20)) - 1) / 25, 5 / (3 * (1 + f) * c),
-                                         Real(1)};
+  const viscoroll::LineScene<Real> scene{.c1 = Real(1),
+                                         .c2 = (log(Real(20)) - 1) / 25,
+                                         .load = 5 / (3 * (1 + f) * c),
+                                         .speed = Real(1)};
   auto s = solver.solve(scene);
   for (auto _ : state) {
     s = solver.solve(scene);

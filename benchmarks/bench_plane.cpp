@@ -12,14 +12,14 @@ void BM_plane_solve(benchmark::State& state) {
   const Real vtau = Real(state.range(0)) / 100;  // V tau / a0 in hundredths
   const viscoroll::PlaneSolver<Real, viscoroll::StandardLinearSolid<Real>> solver(
       viscoroll::StandardLinearSolid<Real>(Real(1), Real(0.5), Real(9), vtau));
-  const viscoroll::PlaneScene<Real> scene{Real(1), Real(1), Real(1)};
+  const viscoroll::PlaneScene<Real> scene{.c1 = Real(1), .load = Real(1), .speed = Real(1)};
   for (auto _ : state) benchmark::DoNotOptimize(solver.solve(scene).chi);
 }
 
 void BM_plane_solve_elastic(benchmark::State& state) {
   const viscoroll::PlaneSolver<double, viscoroll::Elastic<double>> solver(
       viscoroll::Elastic<double>(1.0, 0.5));
-  const viscoroll::PlaneScene<double> scene{1.0, 1.0, 1.0};
+  const viscoroll::PlaneScene<double> scene{.c1 = 1.0, .load = 1.0, .speed = 1.0};
   for (auto _ : state) benchmark::DoNotOptimize(solver.solve(scene).a);
 }
 
@@ -28,14 +28,14 @@ void BM_plane_pressure_point(benchmark::State& state) {
   const Real vtau = Real(state.range(0)) / 100;
   const auto s = viscoroll::PlaneSolver<Real, viscoroll::StandardLinearSolid<Real>>(
                      viscoroll::StandardLinearSolid<Real>(Real(1), Real(0.5), Real(9), vtau))
-                     .solve({Real(1), Real(1), Real(1)});
+                     .solve({.c1 = Real(1), .load = Real(1), .speed = Real(1)});
   for (auto _ : state) benchmark::DoNotOptimize(s.pressure(s.b + s.a / 3));
 }
 
 void BM_plane_peak(benchmark::State& state) {
   const double vtau = double(state.range(0)) / 100;
   const auto s = viscoroll::PlaneSolverD(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, vtau))
-                     .solve({1.0, 1.0, 1.0});
+                     .solve({.c1 = 1.0, .load = 1.0, .speed = 1.0});
   for (auto _ : state) benchmark::DoNotOptimize(s.peak().pressure);
 }
 

@@ -20,7 +20,8 @@ void BM_sweep_line(benchmark::State& state) {
   options.terms = static_cast<int>(state.range(0));
   const viscoroll::LineSolverD solver(kRubber, options);
   const double load = 5.0 / (3 * (1 + 9) * kRubber.instantaneous_compliance());  // a0 = 1
-  const viscoroll::LineScene<double> scene{1.0, (std::log(20.0) - 1) / 25, load, 0.0};
+  const viscoroll::LineScene<double> scene{
+      .c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = load, .speed = 0.0};
   std::vector<double> speeds;
   for (int i = 0; i < 100; ++i) speeds.push_back(std::pow(10.0, -3 + 6.0 * i / 99));
   viscoroll::SweepOptions sweep_options;

@@ -126,7 +126,8 @@ const std::vector<int> chain{2, 4, 8, 16, 32};
 /// The line solver at every N of `terms` for one speed, each point timed as a cold solve.
 class LineSeries {
  public:
-  explicit LineSeries(double vtau) : scene_{c1, c2, load, vtau / tau} {}
+  explicit LineSeries(double vtau)
+      : scene_{.c1 = c1, .c2 = c2, .load = load, .speed = vtau / tau} {}
 
   Point point(int n) {
     const Stage& s = n == 1 ? stage(1, nullptr, {0, 0}) : side(n);
@@ -211,7 +212,8 @@ Point bem_point(int n, double vtau) {
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, tau), o);
   viscoroll::BemSolverD::Solution s;
   const Timed t = time_median([&] {
-    s = solver.solve(viscoroll::BemScene<double>{c1, c2, load, vtau / tau});
+    s = solver.solve(
+        viscoroll::BemScene<double>{.c1 = c1, .c2 = c2, .load = load, .speed = vtau / tau});
   });
   return {"bem",         vtau,          n,
           s.converged,   s.reason,      t.seconds,

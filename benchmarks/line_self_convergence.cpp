@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       viscoroll::LineSolverD::Solution s;
       for (int r = 0; r < repeat; ++r) {
         const auto t0 = std::chrono::steady_clock::now();
-        s = solver.solve({c1, c2, load, vtau});
+        s = solver.solve({.c1 = c1, .c2 = c2, .load = load, .speed = vtau});
         seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       }

@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
   options.terms = args.terms;
   const Solver solver(material, options);
   auto solve = [&](double vtau, const Solution* start) {
-    return solver.solve(viscoroll::LineScene<double>{c1, c2, load, vtau / tau}, start);
+    return solver.solve(
+        viscoroll::LineScene<double>{.c1 = c1, .c2 = c2, .load = load, .speed = vtau / tau}, start);
   };
   // Continuation: seed with the last converged solution (the solver's own seed otherwise).
   std::optional<Solution> last;

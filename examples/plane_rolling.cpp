@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   auto solve = [&](double f, double vtau) {
     const double mu_d = 4 * (1 + f) * 0.5 / (2 * pi);
     const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(mu_d, 0.5, f, vtau));
-    return solver.solve({1.0, 1.0, 1.0});
+    return solver.solve({.c1 = 1.0, .load = 1.0, .speed = 1.0});
   };
   std::ofstream sweep(dir / "plane_sweep.csv");
   sweep << "vtau_over_a0,f,a_over_a0,b_over_a0,chi_over_c1a0,pmax_a0_over_w,pmax_x_over_a0,converged\n";

@@ -633,7 +633,7 @@ int run_plane(const Problem& p, Output& out) {
   return run_sweeps(
       p, p.tau, out,
       [&](double speed) {
-        return viscoroll::PlaneScene<double>{p.c1, p.load, speed};
+        return viscoroll::PlaneScene<double>{.c1 = p.c1, .load = p.load, .speed = speed};
       },
       [&](double tau) { return viscoroll::PlaneSolverD(material(p, tau)); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
@@ -679,7 +679,7 @@ int run_line(const Problem& p, Output& out) {
   return run_sweeps(
       p, p.tau, out,
       [&](double speed) {
-        return viscoroll::LineScene<double>{p.c1, c2, p.load, speed};
+        return viscoroll::LineScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
       },
       [&](double tau) { return viscoroll::LineSolverD(material(p, tau), options); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
@@ -768,7 +768,7 @@ int run_bem(const Problem& p, Output& out) {
   viscoroll::BemOptions options;
   options.grid = bem_grid(p);
   const auto scene_at = [&](double speed) {
-    return viscoroll::BemScene<double>{p.c1, c2, p.load, speed};
+    return viscoroll::BemScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
   };
   if (p.prony)
     return run_sweeps(

@@ -7,7 +7,7 @@
 
 int main() {
   const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(1.0, 0.3, 9.0, 1.0));
-  const auto s = solver.solve({/*c1=*/1.0, /*load=*/1.0, /*speed=*/1.0});
+  const auto s = solver.solve({.c1 = 1.0, .load = 1.0, .speed = 1.0});
   const auto peak = s.peak();
   std::cout << "a = " << s.a << ", b = " << s.b << ", chi = " << s.chi << ", pmax = " << peak.pressure
             << " at x = " << peak.x << '\n';

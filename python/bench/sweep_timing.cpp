@@ -48,8 +48,9 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t c0 = std::clock();
-    const auto out =
-        viscoroll::sweep(solver, viscoroll::LineScene<double>{c1, c2, load, 0.0}, v, options);
+    const auto out = viscoroll::sweep(
+        solver, viscoroll::LineScene<double>{.c1 = c1, .c2 = c2, .load = load, .speed = 0.0}, v,
+        options);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
     converged = static_cast<int>(

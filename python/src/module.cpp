@@ -97,7 +97,7 @@ PlaneSolver make_plane_solver(const SceneSpec& scene) {
 }
 
 PlaneScene<double> plane_scene(const SceneSpec& scene, double speed) {
-  PlaneScene<double> s{scene.roller.c1, scene.load, speed};
+  PlaneScene<double> s{.c1 = scene.roller.c1, .load = scene.load, .speed = speed};
   s.validate();
   return s;
 }

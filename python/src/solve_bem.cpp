@@ -81,7 +81,8 @@ Solver make_solver(const SceneSpec& scene, int grid) {
 }
 
 BemScene<double> bem_scene(const SceneSpec& scene, double speed) {
-  BemScene<double> s{scene.roller.c1, scene.roller.c2, scene.load, speed};
+  BemScene<double> s{
+      .c1 = scene.roller.c1, .c2 = scene.roller.c2, .load = scene.load, .speed = speed};
   s.validate();
   return s;
 }

@@ -61,7 +61,8 @@ Solver make_solver(const SceneSpec& scene, int terms) {
 }
 
 LineScene<double> line_scene(const SceneSpec& scene, double speed) {
-  LineScene<double> s{scene.roller.c1, scene.roller.c2, scene.load, speed};
+  LineScene<double> s{
+      .c1 = scene.roller.c1, .c2 = scene.roller.c2, .load = scene.load, .speed = speed};
   s.validate();
   return s;
 }

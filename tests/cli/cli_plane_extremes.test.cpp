@@ -1,6 +1,7 @@
-// viscoroll-solve --method plane at the ends of the floating-point range (issue 24): a scene ends
-// in strict JSON lines with finite numbers (exit 0) or in one message on stderr and nothing on
-// stdout (exit 2), also when one speed of a sweep is the bad one (docs/errors.md).
+// viscoroll-solve at the ends of the floating-point range (issue 24): a plane scene ends in strict
+// JSON lines with finite numbers (exit 0) or in one message on stderr and nothing on stdout (exit
+// 2), also when one speed of a sweep is the bad one; V tau overflowing a double is null in every
+// method, the rest of the line finite (docs/cli.md, docs/errors.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -61,4 +62,29 @@ TEST_CASE("cli: plane scenes at the ends of the range end in strict JSON or a cl
   CHECK(sweep.status == 2);
   CHECK(sweep.out.empty());
   CHECK_THAT(sweep.err, Catch::Contains("the offset b of the contact"));
+}
+
+TEST_CASE("cli: V tau beyond a double is null and the rest of the line finite, every method",
+          "[cli][extremes]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // speed * tau = 1e400 overflows; each solver scales V tau and returns the glassy contact.
+  for (const char* method : {"plane", "line", "bem"}) {
+    INFO(method);
+    const Run r = run({"--method", method,      "--mu-d", "1",         "--nu",   "0.5",  "--f",
+                       "9",        "--tau",     "1e200",  "--speed",   "1e200",  "--c1", "1",
+                       "--c2",     "0.0798291", "--load", "2.0943951", "--grid", "6"});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto json = json_lines(r.out);  // strict: throws on inf or nan
+    REQUIRE(json.size() == 1);
+    const auto& line = json.front();
+    CHECK(line["vtau"].is_null());
+    CHECK(line["converged"] == true);
+    // json_lines has rejected inf and nan: a number that was not finite is null here.
+    for (const auto& [key, value] : line.items()) {
+      INFO(key);
+      if (key != "vtau") CHECK(!value.is_null());
+    }
+    CHECK(line["a0"].get<double>() > 0);
+  }
 }

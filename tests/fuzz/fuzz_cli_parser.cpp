@@ -64,7 +64,7 @@ void check_scene(const viscoroll::cli::Scene& s) {
   for (double t : s.temperatures) require(std::isfinite(t));
   for (double v : s.speeds) {
     try {
-      viscoroll::PlaneScene<double>{c1, s.load, v}.validate();
+      viscoroll::PlaneScene<double>{.c1 = c1, .load = s.load, .speed = v}.validate();
     } catch (const std::invalid_argument&) {
       require(!std::isfinite(c1));  // 1/radius overflowed: the library says so
     }
@@ -96,7 +96,7 @@ void run_options(const std::string& text) {
   require(o.method.has_value());
   require(!o.tau.empty() && !o.speeds.empty());
   for (double speed : o.speeds) {
-    const viscoroll::PlaneScene<double> scene{o.c1, o.load, speed};
+    const viscoroll::PlaneScene<double> scene{.c1 = o.c1, .load = o.load, .speed = speed};
     scene.validate();
   }
   for (double tau : o.tau) (void)viscoroll::StandardLinearSolid<double>(o.mu_d, o.nu, o.f, tau);

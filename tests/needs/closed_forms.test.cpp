@@ -69,20 +69,22 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy plane scenes are Hertz's s
 
   SECTION("elastic material (the long-term modulus)") {
     const viscoroll::Elastic<Real> elastic(mu_d / (1 + f), nu);
-    const auto s = PlaneSolver<Real, viscoroll::Elastic<Real>>(elastic).solve({c1, load, Real(3)});
+    const auto s = PlaneSolver<Real, viscoroll::Elastic<Real>>(elastic).solve(
+        {.c1 = c1, .load = load, .speed = Real(3)});
     check_hertz_strip(s, c1, load, elastic.instantaneous_compliance(), a0);
   }
   SECTION("V tau = 0 and V tau <= eps a0: the long-term compliance") {
     for (const Real speed : {Real(0), eps<Real>() * a0 / 2}) {
       INFO("speed = " << speed);
-      const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(probe).solve({c1, load, speed});
+      const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(probe).solve(
+          {.c1 = c1, .load = load, .speed = speed});
       check_hertz_strip(s, c1, load, (1 + f) * c, a0);
     }
   }
   SECTION("f = 0: no memory at any speed") {
     const StandardLinearSolid<Real> no_creep(mu_d, nu, Real(0), Real(1));
-    const auto s =
-        PlaneSolver<Real, StandardLinearSolid<Real>>(no_creep).solve({c1, load, Real(1)});
+    const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(no_creep).solve(
+        {.c1 = c1, .load = load, .speed = Real(1)});
     check_hertz_strip(s, c1, load, c, std::sqrt(4 * c * load / c1));
   }
   SECTION("glassy: V tau = 1e30 a0 and V tau = +inf, the instantaneous compliance") {
@@ -90,7 +92,8 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy plane scenes are Hertz's s
     for (const Real tau : {Real(1), Real(1e30)}) {
       INFO("tau = " << tau);
       const StandardLinearSolid<Real> m(mu_d, nu, f, tau);
-      const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(m).solve({c1, load, Real(1e30)});
+      const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(m).solve(
+          {.c1 = c1, .load = load, .speed = Real(1e30)});
       check_hertz_strip(s, c1, load, c, a0);
     }
   }
@@ -100,7 +103,8 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy plane scenes are Hertz's s
     // the rolling range) the bound is checked against the rolling solution itself.
     const Real u = Real(1e-4);
     const StandardLinearSolid<Real> m(mu_d, nu, f, a0 / u);
-    const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(m).solve({c1, load, Real(1)});
+    const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(m).solve(
+        {.c1 = c1, .load = load, .speed = Real(1)});
     using std::log;
     using std::sqrt;
     const Real bound = u * (log(2 / u) + log(1 + f) / 2 + 1);
@@ -170,16 +174,16 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy line scenes are Kalker's s
 
   SECTION("elastic material (the long-term modulus)") {
     const viscoroll::Elastic<Real> elastic(mu_d / (1 + f), nu);
-    const auto s =
-        LineSolver<Real, viscoroll::Elastic<Real>>(elastic).solve({c1, c2, load, Real(2)});
+    const auto s = LineSolver<Real, viscoroll::Elastic<Real>>(elastic).solve(
+        {.c1 = c1, .c2 = c2, .load = load, .speed = Real(2)});
     check_static_line(s, c1, c2, load, elastic.instantaneous_compliance(), a0,
                       "static (closed form)");
   }
   SECTION("V tau = 0 and V tau <= eps a0: the long-term compliance") {
     for (const Real speed : {Real(0), eps<Real>() * a0 / 2}) {
       INFO("speed = " << speed);
-      const auto s =
-          LineSolver<Real, StandardLinearSolid<Real>>(probe).solve({c1, c2, load, speed});
+      const auto s = LineSolver<Real, StandardLinearSolid<Real>>(probe).solve(
+          {.c1 = c1, .c2 = c2, .load = load, .speed = speed});
       check_static_line(s, c1, c2, load, (1 + f) * c, a0, "static (closed form)");
     }
   }
@@ -187,8 +191,8 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy line scenes are Kalker's s
     for (const Real tau : {Real(1), Real(1e30)}) {
       INFO("tau = " << tau);
       const StandardLinearSolid<Real> m(mu_d, nu, f, tau);
-      const auto s =
-          LineSolver<Real, StandardLinearSolid<Real>>(m).solve({c1, c2, load, Real(1e30)});
+      const auto s = LineSolver<Real, StandardLinearSolid<Real>>(m).solve(
+          {.c1 = c1, .c2 = c2, .load = load, .speed = Real(1e30)});
       check_static_line(s, c1, c2, load, c, a0, "glassy limit (closed form)");
       // The 3-D glassy contact: a and l scale by (1 + f)^(-1/3) (docs/paper.md, correction 7).
       CHECK(std::abs(s.a(Real(0)) - a0 / cbrt(1 + f)) <= 32 * eps<Real>() * a0);

@@ -13,6 +13,7 @@
 #include <vector>
 #include <viscoroll/bem/hertz.hpp>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/validate.hpp>
 
 namespace viscoroll {
@@ -23,10 +24,10 @@ namespace viscoroll {
 /// ellipse of the long-term compliance) and c1 enters chi (Eq. 51).
 template <RealScalar Real>
 struct BemScene {
-  Real c1;                                       ///< curvature across the roller (x), 1/m
-  Real c2;                                       ///< curvature along the roller (y), 1/m
-  Real load;                                     ///< total load P, N
-  Real speed;                                    ///< rolling speed V, m/s
+  Real c1 = detail::required_field<Real>();      ///< curvature across the roller (x), 1/m
+  Real c2 = detail::required_field<Real>();      ///< curvature along the roller (y), 1/m
+  Real load = detail::required_field<Real>();    ///< total load P, N
+  Real speed = detail::required_field<Real>();   ///< rolling speed V, m/s
   std::function<Real(Real, Real)> profile = {};  ///< h(x, y), or empty for the parabolic gap
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, c2 > 0, 1e-10 <= c2/c1 <=

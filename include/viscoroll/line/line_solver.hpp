@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/line_residual.hpp>
@@ -41,10 +42,10 @@ namespace viscoroll {
 /// axis) under total load `load`, rolling towards +x at `speed`.
 template <RealScalar Real>
 struct LineScene {
-  Real c1;
-  Real c2;
-  Real load;
-  Real speed;
+  Real c1 = detail::required_field<Real>();
+  Real c2 = detail::required_field<Real>();
+  Real load = detail::required_field<Real>();
+  Real speed = detail::required_field<Real>();
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, 0 < c2 < 8 e^-3 c1 (the
   /// contact is longer in y than in x), load > 0, speed >= 0, all finite.

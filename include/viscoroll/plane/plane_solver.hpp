@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <limits>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
@@ -35,9 +36,9 @@ namespace viscoroll {
 /// towards +x at `speed`.
 template <RealScalar Real>
 struct PlaneScene {
-  Real c1;
-  Real load;
-  Real speed;
+  Real c1 = detail::required_field<Real>();
+  Real load = detail::required_field<Real>();
+  Real speed = detail::required_field<Real>();
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, load > 0, speed >= 0.
   void validate() const {
