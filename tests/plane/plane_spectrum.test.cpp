@@ -132,6 +132,10 @@ TEST_CASE("plane spectrum: two times far apart give two peaks of chi with a plat
 TEST_CASE("plane spectrum: agrees with the independent collocation, two terms", "[plane][spectrum][reference]") {
   const PronyCreep<double> m(1.0, 0.5, {{2.0, 0.3}, {5.0, 30.0}});
   for (double speed : {0.1, 1.0, 10.0}) check_against_collocation(m, speed, 96);
+  // One term far into its glassy range (V tau_2 / a ~ 1e5 ... 1e6): its effect on b and chi is
+  // O(a / V tau_2) and must not be lost to rounding of numbers of order V tau_2 ((S5)).
+  const PronyCreep<double> glassy(1.0, 0.5, {{2.0, 0.3}, {5.0, 3e4}});
+  for (double speed : {1.0, 10.0}) check_against_collocation(glassy, speed, 96);
 }
 
 TEST_CASE("plane spectrum: agrees with the independent collocation, twenty terms",

@@ -122,27 +122,30 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths)
       if (j != i) w *= mu[i] / (mu[i] - mu[j]);
     weight[i] = w;
   }
-  // Lambda_1 - lambda_k and Lambda_1 - mu_i as sums of positive lengths (mu_i < lambda_i).
-  const auto others = [&](std::size_t k) {
-    Real sum = 0;
-    for (std::size_t j = 0; j < m; ++j)
-      if (j != k) sum += lambda[j] / a;
-    return sum;
-  };
-  // Unknowns U_i = A_i u_i / a^2, W_i = (A_i w_i - A_i Lambda_1) / a, b / a (S5).
+  // (S5) The glassy part of Pi_g, exact: omega_i = A_i N(1/mu_i), N(z) = (1 - prod_k (1 -
+  // lambda_k z))/z - Lambda_1, which makes every leading-edge condition (S7) hold with b = 0 and
+  // Pi_h = 0. With P_i = prod_k (1 - lambda_k/mu_i) (each factor (mu_i - lambda_k)/mu_i, no
+  // cancellation), A_i (Lambda_1 - mu_i) + omega_i = -A_i mu_i P_i.
+  std::vector<Real> product(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    Real p = 1;
+    for (std::size_t k = 0; k < m; ++k) p *= (mu[i] - lambda[k]) / mu[i];
+    product[i] = p;
+  }
+  // Unknowns U_i = A_i u_i / a^2, W_i = (A_i (w_i - Lambda_1) - omega_i) / a, b / a.
   for (std::size_t i = 0; i < m; ++i) {
     // (S6) trailing edge of relaxation length mu_i, times A_i / I0(a/mu_i):
-    //   U_i - r_i W_i + r_i A_i b = r_i A_i (Lambda_1 - mu_i),  r_i = I1/I0(a / mu_i).
+    //   U_i - r_i W_i + r_i A_i b = -r_i A_i mu_i P_i,  r_i = I1/I0(a / mu_i).
     const Real mu_i = mu[i] / a;
     const Real r = special::bessel_i1_over_i0(1 / mu_i);
     at(i, i) = 1;
     at(i, m + i) = -r;
     at(i, 2 * m) = r * weight[i];
-    rhs[i] = r * weight[i] * ((lambda[i] - mu[i]) / a + others(i));
+    rhs[i] = -r * weight[i] * mu_i * product[i];
   }
   for (std::size_t k = 0; k < m; ++k) {
     // (S7) leading edge of retardation length lambda_k, over K0(a/lambda_k) (1 + s_k) Psi_k:
-    //   sum_i c_ki (U_i + s_k W_i) - (s_k / Psi_k) b = -(s_k / Psi_k) (Lambda_1 - lambda_k),
+    //   sum_i c_ki (U_i + s_k W_i) - (s_k / Psi_k) b = 0,
     //   c_ki = lambda_k / (lambda_k - mu_i),  Psi_k = prod_j (1 - mu_j / lambda_k),
     //   s_k = K1/K0(a/lambda_k).
     const Real lam = lambda[k] / a;
@@ -156,9 +159,9 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths)
       at(m + k, m + i) = s * c * row;
     }
     at(m + k, 2 * m) = -s * inv_psi * row;
-    rhs[m + k] = -s * inv_psi * others(k) * row;
   }
-  // Pi_g(0) = sum_i A_i w_i = Lambda_1 (S4), with sum_i A_i = 1: sum_i W_i = 0.
+  // Pi_g(0) = sum_i A_i w_i = Lambda_1 (S4), with sum_i A_i = 1 and sum_i omega_i = N(0) = 0:
+  // sum_i W_i = 0.
   for (std::size_t i = 0; i < m; ++i) at(2 * m, m + i) = 1;
   rhs[2 * m] = 0;
   const std::vector<Real> X0 = X, rhs0 = rhs;
@@ -171,11 +174,10 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths)
   out.weight = weight;
   Real g0 = 0, moment = 0;
   const Real b = x[2 * m];
-  Real big_lambda = 0;
-  for (std::size_t k = 0; k < m; ++k) big_lambda += lambda[k] / a;
   for (std::size_t i = 0; i < m; ++i) {
-    // The term's (32): even = A_i, odd = A_i (Lambda_1 - b) + W_i, g = U_i (S9).
-    const Real odd = weight[i] * (big_lambda - b) + x[m + i];
+    // The term's (32): even = A_i, odd = A_i (w_i - b) = A_i mu_i (1 - P_i) - A_i b + W_i, g = U_i
+    // (S9).
+    const Real odd = weight[i] * (mu[i] / a) * (1 - product[i]) - weight[i] * b + x[m + i];
     out.u[i] = x[i] * a * a;
     out.w[i] = odd * a;
     g0 += x[i];  // G0 = Pi_h(0) = sum_i A_i u_i (S8)
