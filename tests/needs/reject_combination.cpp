@@ -15,7 +15,6 @@ viscoroll::LineSolver<double, viscoroll::StandardLinearSolid<double>,
                       viscoroll::AdaptiveGaussKronrod<double>>
     solver(viscoroll::StandardLinearSolid<double>(1.0, 0.5, 9.0, 1.0));
 #elif VISCOROLL_REJECT_CASE == 3
-// A spectrum in the plane solver's closed forms: SingleTimeModel.
-viscoroll::PlaneSolver<double, viscoroll::PronyRelaxation<double>> solver(
-    viscoroll::PronyRelaxation<double>(1.0, 0.5, {{1.0, 1.0}}));
+// A type that is not a constitutive model where the plane solver needs one: ConstitutiveModel.
+viscoroll::PlaneSolver<double, double> solver(1.0);
 #endif

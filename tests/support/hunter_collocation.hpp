@@ -201,26 +201,39 @@ struct Dimensionless {
   Real rcond{};
 };
 
-/// Collocation matrix A (N+1 x N+1): A(j, n) = M_n(s_j) for n < N, A(j, N) = -1.
+/// One memory term in the collocation's units: creep ratio f and v = V tau / a.
+template <class Real>
+struct MemoryTerm {
+  Real f, v;
+};
+
+/// Collocation matrix A (N+1 x N+1): A(j, n) = M_n(s_j) for n < N, A(j, N) = -1, with
+/// M_n(s) = H_n(s) + sum_k f_k m_n(s; v_k) (one memory integral per term of the spectrum).
 template <class Real>
 Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> collocation_matrix(
-    Real f, Real v, int n_terms, const QuadratureSettings<Real>& q = {}) {
+    const std::vector<MemoryTerm<Real>>& terms, int n_terms, const QuadratureSettings<Real>& q = {}) {
   using std::cos;
   const Real pi = boost::math::constants::pi<Real>();
   const int rows = n_terms + 1;
   Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> A(rows, rows);
-  std::vector<Real> tail;
-  if (v > 0) tail = tail_integrals(v, n_terms, q);
+  std::vector<std::vector<Real>> tails(terms.size());
+  for (std::size_t k = 0; k < terms.size(); ++k)
+    if (terms[k].v > 0) tails[k] = tail_integrals(terms[k].v, n_terms, q);
   for (int j = 0; j < rows; ++j) {
     const Real phi = Real(2 * j + 1) * pi / Real(2 * rows);
     const Real cos_phi = cos(phi), sin_phi = sin(phi);
-    std::vector<Real> memory;
-    if (v > 0) memory = memory_integrals(phi, v, tail, q);
+    std::vector<std::vector<Real>> memory(terms.size());
+    for (std::size_t k = 0; k < terms.size(); ++k)
+      if (terms[k].v > 0) memory[k] = memory_integrals(phi, terms[k].v, tails[k], q);
     Real t = cos_phi, t_sin = sin_phi;  // T_{n+1}(s_j) = cos((n+1) phi_j)
     for (int n = 0; n < n_terms; ++n) {
-      // v = 0: the memory integral is int e^{-eta} d eta H_n(s) = H_n(s).
-      const Real mem = v > 0 ? memory[static_cast<std::size_t>(n)] : t;
-      A(j, n) = t + f * mem;  // M_n(s_j) = H_n(s_j) + f m_n(s_j), H_n = T_{n+1} on [-1, 1]
+      Real entry = t;  // M_n(s_j) = H_n(s_j) + sum_k f_k m_n, H_n = T_{n+1} on [-1, 1]
+      for (std::size_t k = 0; k < terms.size(); ++k) {
+        // v = 0: the memory integral is int e^{-eta} d eta H_n(s) = H_n(s).
+        const Real mem = terms[k].v > 0 ? memory[k][static_cast<std::size_t>(n)] : t;
+        entry += terms[k].f * mem;
+      }
+      A(j, n) = entry;
       const Real next = t * cos_phi - t_sin * sin_phi;
       t_sin = t_sin * cos_phi + t * sin_phi;
       t = next;
@@ -230,15 +243,22 @@ Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> collocation_matrix(
   return A;
 }
 
+/// The single-term matrix (creep ratio f, v = V tau / a).
 template <class Real>
-Dimensionless<Real> solve_dimensionless(Real f, Real v, int n_terms,
+Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> collocation_matrix(
+    Real f, Real v, int n_terms, const QuadratureSettings<Real>& q = {}) {
+  return collocation_matrix(std::vector<MemoryTerm<Real>>{{f, v}}, n_terms, q);
+}
+
+template <class Real>
+Dimensionless<Real> solve_dimensionless(const std::vector<MemoryTerm<Real>>& terms, int n_terms,
                                         const QuadratureSettings<Real>& q = {}) {
   using std::cos;
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
   const Real pi = boost::math::constants::pi<Real>();
   const int rows = n_terms + 1;
-  const Matrix A = collocation_matrix(f, v, n_terms, q);
+  const Matrix A = collocation_matrix(terms, n_terms, q);
   Vector rhs(rows);
   for (int j = 0; j < rows; ++j) rhs(j) = cos(Real(2 * j + 1) * pi / Real(2 * rows));
   const Eigen::PartialPivLU<Matrix> lu(A);
@@ -251,6 +271,12 @@ Dimensionless<Real> solve_dimensionless(Real f, Real v, int n_terms,
   out.residual = (A * x - rhs).cwiseAbs().maxCoeff() / scale;
   out.rcond = lu.rcond();
   return out;
+}
+
+template <class Real>
+Dimensionless<Real> solve_dimensionless(Real f, Real v, int n_terms,
+                                        const QuadratureSettings<Real>& q = {}) {
+  return solve_dimensionless(std::vector<MemoryTerm<Real>>{{f, v}}, n_terms, q);
 }
 
 /// q(s) = sum c_n U_n(s) and D(s) = (1 - s^2) q'(s) - s q(s); dp/ds = D / sqrt(1 - s^2).
@@ -279,14 +305,36 @@ std::pair<Real, Real> series_and_slope(const std::vector<Real>& c, Real s) {
 /// @param c1         curvature C1 of the profile S = -C1 x^2 / 2 + d
 /// @param load       W, load per unit length
 /// @param n_terms    N, number of Chebyshev terms of p / sqrt(1 - s^2)
+/// The same for a spectrum: memory terms (f_k, V tau_k) given as {f, v} = {f_k, V tau_k}.
+template <class Real>
+HunterReference<Real> hunter_reference(Real compliance,
+                                       const std::vector<hunter_detail::MemoryTerm<Real>>& spectrum,
+                                       Real c1, Real load, int n_terms);
+
 template <class Real>
 HunterReference<Real> hunter_reference(Real compliance, Real f, Real vt, Real c1, Real load,
                                        int n_terms) {
+  if (!(f >= 0) || !(vt >= 0) || !std::isfinite(static_cast<double>(f)) ||
+      !std::isfinite(static_cast<double>(vt)))
+    throw std::invalid_argument("hunter_reference: need c, C1, W > 0, f, V tau >= 0, N >= 2");
+  return hunter_reference(compliance, std::vector<hunter_detail::MemoryTerm<Real>>{{f, vt}}, c1, load, n_terms);
+}
+
+template <class Real>
+HunterReference<Real> hunter_reference(Real compliance,
+                                       const std::vector<hunter_detail::MemoryTerm<Real>>& spectrum,
+                                       Real c1, Real load, int n_terms) {
   using std::abs;
   using std::cos;
   using std::sqrt;
-  if (!(compliance > 0) || !(f >= 0) || !(vt >= 0) || !(c1 > 0) || !(load > 0) || n_terms < 2 ||
-      !std::isfinite(static_cast<double>(f)) || !std::isfinite(static_cast<double>(vt)))
+  Real f = 0;  // the creep ratio of the spectrum, sum f_k
+  for (const auto& t : spectrum) {
+    if (!(t.f >= 0) || !(t.v >= 0) || !std::isfinite(static_cast<double>(t.f)) ||
+        !std::isfinite(static_cast<double>(t.v)))
+      throw std::invalid_argument("hunter_reference: need f_k, V tau_k >= 0, finite");
+    f += t.f;
+  }
+  if (!(compliance > 0) || !(c1 > 0) || !(load > 0) || n_terms < 2)
     throw std::invalid_argument("hunter_reference: need c, C1, W > 0, f, V tau >= 0, N >= 2");
   const Real pi = boost::math::constants::pi<Real>();
   const Real eps = std::numeric_limits<Real>::epsilon();
@@ -299,8 +347,9 @@ HunterReference<Real> hunter_reference(Real compliance, Real f, Real vt, Real c1
   // Load condition in units of the long-term Hertz load: (a/a_L)^2 (1 + f) gamma_0 - 1 = 0.
   const auto solve_at = [&](Real ratio) {
     if (ratio != last_ratio) {
-      const Real v = vt / (ratio * a_long);
-      last = hunter_detail::solve_dimensionless(f, v, n_terms);
+      std::vector<hunter_detail::MemoryTerm<Real>> terms;
+      for (const auto& t : spectrum) terms.push_back({t.f, t.v / (ratio * a_long)});
+      last = hunter_detail::solve_dimensionless(terms, n_terms);
       last_ratio = ratio;
       ++out.root_evaluations;
     }

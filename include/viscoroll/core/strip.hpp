@@ -97,6 +97,59 @@ bool strip_is_glassy(Real vtau, Real f, Real a0) {
   return u * (boost::math::constants::ln_two<Real>() - log(u) + log(1 + f) / 2 + 1) <= eps;
 }
 
+/// Location and value of the largest pressure on a strip.
+template <RealScalar Real>
+struct PressurePeak {
+  Real x;         ///< where the peak sits (moving frame)
+  Real pressure;  ///< its value
+};
+
+namespace detail {
+/// The largest value of `pressure` on [lo, hi]: samples clustered at both ends (cosine spacing)
+/// and, for each length of `layers`, through the layer of that width behind `edge` (the leading
+/// edge, where the low-speed peak sits, Fig. 6); then the root of `slope` between the best
+/// sample's neighbours (when `has_slope`), else Brent's minimiser of -pressure.
+template <class Real, class Pressure, class Slope>
+PressurePeak<Real> strip_peak(Real lo, Real hi, Real edge, const std::vector<Real>& layers,
+                              Pressure pressure, Slope slope, bool has_slope) {
+  using std::cos;
+  const Real pi = boost::math::constants::pi<Real>();
+  std::vector<Real> xs;
+  const int n = 96;
+  const Real mid = (lo + hi) / 2, half = (hi - lo) / 2;
+  for (int i = 0; i <= n; ++i) xs.push_back(mid - half * cos(pi * Real(i) / Real(n)));
+  for (const Real layer : layers)
+    for (Real m = Real(1) / 128; m <= 64; m *= 2)
+      if (edge - m * layer > lo && edge - m * layer < hi) xs.push_back(edge - m * layer);
+  std::sort(xs.begin(), xs.end());
+  std::size_t best = 0;
+  Real best_p = pressure(xs[0]);
+  for (std::size_t i = 1; i < xs.size(); ++i) {
+    const Real p = pressure(xs[i]);
+    if (p > best_p) best_p = p, best = i;
+  }
+  if (best == 0 || best + 1 == xs.size()) return {xs[best], best_p};  // at an end of [lo, hi]
+  const Real left = xs[best - 1], right = xs[best + 1];
+  if (has_slope) {
+    const Real s_left = slope(left), s_right = slope(right);
+    if (s_left > 0 && s_right < 0) {
+      std::uintmax_t iterations = 200;
+      const auto root = boost::math::tools::toms748_solve(
+          slope, left, right, s_left, s_right,
+          boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3),
+          iterations);
+      const Real x = (root.first + root.second) / 2, p = pressure(x);
+      if (p >= best_p) return {x, p};
+    }
+  }
+  const auto found = boost::math::tools::brent_find_minima(
+      [&pressure](Real x) { return -pressure(x); }, left, right,
+      std::numeric_limits<Real>::digits / 2);
+  if (-found.second >= best_p) return {found.first, -found.second};
+  return {xs[best], best_p};
+}
+}  // namespace detail
+
 /// The units in which a strip is computed, powers of two: a length x is held as x 2^-length, the
 /// curvature C1 as C1 2^-curvature and the compliance c as c 2^-compliance; G (a length squared)
 /// as G 4^-length. Then the pseudo-pressure p* of (32) carries 2^(curvature + length), the
@@ -108,13 +161,6 @@ struct StripUnits {
   int length = 0;      ///< binary exponent of the unit of length
   int curvature = 0;   ///< binary exponent of the unit of C1
   int compliance = 0;  ///< binary exponent of the unit of the compliance c
-};
-
-/// Location and value of the largest pressure on a strip.
-template <RealScalar Real>
-struct PressurePeak {
-  Real x;         ///< where the peak sits (moving frame)
-  Real pressure;  ///< its value
 };
 
 /// Pressure on one strip of the contact, Eqs. (32) and (35), computed in the strip's units
@@ -139,12 +185,24 @@ class StripPressure {
     g_ = times_power_of_two(g, -2 * length);
     vtau_ = times_power_of_two(vtau, -length);
     c_ = times_power_of_two(compliance, -units_.compliance);
+    odd_ = vtau_ - b_;
   }
 
   /// The same strip with c1, a, b, g, vtau and compliance given in `units` (StripUnits).
   StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
                 Real compliance)
-      : units_(units), c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance) {}
+      : units_(units), c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance),
+        odd_(vtau - b) {}
+
+  /// A strip whose pseudo-pressure (32) has the coefficients `even`, `odd` and g:
+  /// p* = C1/(2 pi) [even (a^2 - xi^2) + odd xi + g] / sqrt(a^2 - xi^2), all in `units`. One
+  /// relaxation term of a spectrum's strip is such a strip (docs/theory.md, (S9)); (35) holds
+  /// with vtau and f, and the reconstruction from the trailing edge needs (36) in the form
+  /// even a^2 I1(alpha)/alpha - odd a I1(alpha) + g I0(alpha) = 0.
+  StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
+                Real compliance, Real even, Real odd)
+      : units_(units), c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance),
+        odd_(odd), even_(even) {}
 
   Real half_width() const { return length(a_); }
   Real offset() const { return length(b_); }
@@ -203,7 +261,7 @@ class StripPressure {
     if (!(ahead > 0 && behind > 0)) return Real(0);
     const Real root = sqrt(ahead * behind);  // sqrt(a^2 - xi^2) without cancellation
     const Real xi = x - b_;
-    return c1_ / (2 * pi()) * (root + ((vtau_ - b_) * xi + g_) / root);
+    return c1_ / (2 * pi()) * (even_ * root + (odd_ * xi + g_) / root);
   }
 
   // Eq. (35) in units, x in units.
@@ -227,45 +285,13 @@ class StripPressure {
 
   // peak_between in units.
   PressurePeak<Real> peak_in_units(Real lo, Real hi) const {
-    using std::cos;
-    lo = std::max(lo, b_ - a_);
-    hi = std::min(hi, b_ + a_);
-    // Samples clustered at both ends (cosine spacing) and, when there is one, through the
-    // leading-edge layer of width V tau / (1 + f) where the low-speed peak sits (Fig. 6).
-    std::vector<Real> xs;
-    const int n = 96;
-    const Real mid = (lo + hi) / 2, half = (hi - lo) / 2;
-    for (int i = 0; i <= n; ++i) xs.push_back(mid - half * cos(pi() * Real(i) / Real(n)));
-    const Real layer = vtau_ / (1 + f_), edge = b_ + a_;
-    if (vtau_ > 0 && layer < a_)
-      for (Real m = Real(1) / 128; m <= 64; m *= 2)
-        if (edge - m * layer > lo && edge - m * layer < hi) xs.push_back(edge - m * layer);
-    std::sort(xs.begin(), xs.end());
-    std::size_t best = 0;
-    Real best_p = pressure_in_units(xs[0]);
-    for (std::size_t i = 1; i < xs.size(); ++i) {
-      const Real p = pressure_in_units(xs[i]);
-      if (p > best_p) best_p = p, best = i;
-    }
-    if (best == 0 || best + 1 == xs.size()) return {xs[best], best_p};  // at an end of [lo, hi]
-    const Real left = xs[best - 1], right = xs[best + 1];
-    if (vtau_ > 0) {
-      const Real s_left = slope_in_units(left), s_right = slope_in_units(right);
-      if (s_left > 0 && s_right < 0) {
-        std::uintmax_t iterations = 200;
-        const auto root = boost::math::tools::toms748_solve(
-            [this](Real x) { return slope_in_units(x); }, left, right, s_left, s_right,
-            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3),
-            iterations);
-        const Real x = (root.first + root.second) / 2, p = pressure_in_units(x);
-        if (p >= best_p) return {x, p};
-      }
-    }
-    const auto found =
-        boost::math::tools::brent_find_minima([this](Real x) { return -pressure_in_units(x); },
-                                              left, right, std::numeric_limits<Real>::digits / 2);
-    if (-found.second >= best_p) return {found.first, -found.second};
-    return {xs[best], best_p};
+    std::vector<Real> layers;
+    const Real layer = vtau_ / (1 + f_);
+    if (vtau_ > 0 && layer < a_) layers.push_back(layer);
+    return detail::strip_peak(
+        std::max(lo, b_ - a_), std::min(hi, b_ + a_), b_ + a_, layers,
+        [this](Real x) { return pressure_in_units(x); },
+        [this](Real x) { return slope_in_units(x); }, vtau_ > 0);
   }
 
   /// Exponents beyond which exp(-u) is below epsilon / 100: the integrand is dropped there.
@@ -286,9 +312,9 @@ class StripPressure {
     return sum;
   }
 
-  // phi(t) = (a^2 - t^2) + (V tau - b) t + G, the numerator of Eq. (32) over C1/(2 pi).
+  // phi(t) = even (a^2 - t^2) + odd t + G (even = 1, odd = V tau - b for Eq. (32)), the numerator of Eq. (32) over C1/(2 pi).
   Real phi_from_cos(Real cos_theta, Real sin_theta) const {
-    return a_ * a_ * sin_theta * sin_theta + (vtau_ - b_) * a_ * cos_theta + g_;
+    return even_ * (a_ * a_ * sin_theta * sin_theta) + odd_ * a_ * cos_theta + g_;
   }
 
   /// Eq. (35) with t = a cos(theta), 0 <= theta <= theta_s: the whole remaining strip lies within
@@ -329,7 +355,7 @@ class StripPressure {
     auto integrand = [&](Real sigma) {
       const Real ahead_t = ahead - sigma, behind_t = behind + sigma;  // a - t, a + t
       const Real t = xi + sigma;
-      return (ahead_t * behind_t + (vtau_ - b_) * t + g_) / sqrt(ahead_t * behind_t) *
+      return (even_ * (ahead_t * behind_t) + odd_ * t + g_) / sqrt(ahead_t * behind_t) *
              exp(-k * sigma);
     };
     return over_panels(cutoff(), [&](Real u_lo, Real u_hi) {
@@ -356,6 +382,8 @@ class StripPressure {
 
   StripUnits units_;
   Real c1_, a_, b_, g_, vtau_, f_, c_;  // in units_
+  Real odd_;                           // the coefficient of xi in (32): V tau - b unless given
+  Real even_ = 1;                      // the coefficient of a^2 - xi^2 in (32): 1 unless given
 };
 
 }  // namespace viscoroll

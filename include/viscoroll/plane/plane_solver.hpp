@@ -22,10 +22,14 @@
 #include <concepts>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
+#include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
+#include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
@@ -82,14 +86,48 @@ struct PlaneSolution {
   PressurePeak<Real> peak() const { return strip.peak(); }
 };
 
-/// Solver of the plane problem over a scalar, a constitutive model with at most one memory term
-/// (SingleTimeModel: Elastic, StandardLinearSolid) and a quadrature rule (the rule serves the
-/// pressure reconstruction (35); a, b, G and chi are closed-form given a).
-template <RealScalar Real, SingleTimeModel Material, class Quadrature = GaussLegendre<Real, 24>>
+/// The plane solution for a material with a spectrum (several memory terms): the closed form of
+/// docs/theory.md, section 12. Its pressure is the weighted sum of one-term strips (S9); a
+/// static or glassy scene, or one whose terms are all relaxed or glassy at this speed, has
+/// Hertz's strip (`hertz`).
+template <RealScalar Real, class Quadrature>
+struct PlaneSpectrumSolution {
+  Real a;            ///< contact half width
+  Real b;            ///< offset of the contact centre ahead of the cylinder axis
+  Real g;            ///< G0 = Pi_h(0) (S8): F0 = C1 (a^2/4 + G0/2)
+  Real a_long_term;  ///< a0: the long-term Hertz half width, a0^2 = 4 c (1 + sum f_k) W / C1
+  Real f0;           ///< F0 = int p* dx
+  Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51, (S10))
+  bool converged;    ///< the root for a met the tolerance within the allowed iterations
+  int iterations;    ///< root-finder iterations (0 for a closed form)
+  Real residual;     ///< |A^2 (1 + 2 G0/a^2) - 1| at the returned a, A = a / a0 of the terms solved
+  int active_terms;  ///< retardation terms solved for; the others are relaxed or glassy at V
+  Real linear_residual;  ///< relative residual of the linear system (S5) at the returned a
+  Real amplification;    ///< rounding amplification of the closed form (S11); 1 for Hertz
+  std::vector<StripPressure<Real, Quadrature>> hertz;  ///< the Hertz strip, if no term is active
+  std::vector<SpectrumStripPressure<Real, Quadrature>> spectrum;  ///< the strip (S9) otherwise
+
+  /// The pressure at x (moving frame; the cylinder axis is x = 0).
+  Real pressure(Real x) const {
+    return spectrum.empty() ? hertz.front().pressure(x) : spectrum.front().pressure(x);
+  }
+  /// The pressure peak and its location.
+  PressurePeak<Real> peak() const {
+    return spectrum.empty() ? hertz.front().peak() : spectrum.front().peak();
+  }
+};
+
+/// Solver of the plane problem over a scalar, a constitutive model and a quadrature rule (the
+/// rule serves the pressure reconstruction (35); a, b, G and chi are closed-form given a). A model
+/// with at most one memory term (SingleTimeModel: Elastic, StandardLinearSolid) is solved by
+/// (P1)-(P7) and gives a PlaneSolution; a spectrum (PronyCreep, PronyRelaxation) by the closed
+/// form of section 12 of docs/theory.md and gives a PlaneSpectrumSolution.
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 24>>
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 class PlaneSolver {
  public:
-  using Solution = PlaneSolution<Real, Quadrature>;
+  using Solution = std::conditional_t<SingleTimeModel<Material>, PlaneSolution<Real, Quadrature>,
+                                      PlaneSpectrumSolution<Real, Quadrature>>;
 
   explicit PlaneSolver(Material material, PlaneOptions options = {})
       : material_(std::move(material)), options_(options) {
@@ -192,14 +230,150 @@ class PlaneSolver {
   /// The glassy closed form is within eps of the rolling solution (strip_is_glassy, (P6)).
   static bool glassy(Real vtau, Real f, Real a0) { return strip_is_glassy(vtau, f, a0); }
 
+  /// A spectrum (docs/theory.md, section 12): at this speed every retardation length
+  /// lambda_k = V tau_k is relaxed (lambda_k <= eps a, folded into the compliance), glassy
+  /// (strip_is_glassy: dropped, its creep never starts) or active; the active terms' relaxation
+  /// lengths are the zeros of (R7), and (S5)-(S8) with the load (S8) give a by TOMS 748 in
+  /// [glassy, long-term] Hertz widths of the active problem.
+  Solution solve_spectrum(const PlaneScene<Real>& scene) const {
+    scene.validate();
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real c = material_.instantaneous_compliance();
+    const auto& terms = material_.memory_terms();
+    Real creep_ratio = 0;
+    for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
+    const auto inputs = [&] {
+      return "c1 = " + detail::format_value(scene.c1) +
+             ", load = " + detail::format_value(scene.load) +
+             ", speed = " + detail::format_value(scene.speed) +
+             ", compliance = " + detail::format_value(c) +
+             ", sum of f = " + detail::format_value(creep_ratio) +
+             ", terms = " + std::to_string(terms.size());
+    };
+    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+    const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
+    const auto creep = binary<Real>(1 + creep_ratio);
+    const auto a0 =
+        binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
+    const StripUnits units{a0.e, c1.e, cc.e};
+    const Real a_glassy = a0.m / sqrt(1 + creep_ratio);
+    // Classify the terms at this speed (lengths in units).
+    const auto speed = binary<Real>(scene.speed);
+    Real relaxed = 0, glassy_f = 0;
+    std::vector<detail::SpectrumTerm<Real>> active;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      const Real f = terms[k].f, tau = terms[k].tau;
+      if (!(f > 0)) continue;
+      if (!(scene.speed > 0) || !(tau > 0)) {
+        relaxed += f;
+        continue;
+      }
+      const auto t = binary<Real>(tau);
+      const Real lambda = times_power_of_two(Real(speed.m * t.m), speed.e + t.e - units.length);
+      if (lambda <= eps * a_glassy)
+        relaxed += f;
+      else if (strip_is_glassy(lambda, creep_ratio, a0.m))
+        glassy_f += f;
+      else
+        active.push_back({f, lambda});
+    }
+    // Relaxed terms folded into the compliance, c (1 + relaxed); the active f scaled by
+    // 1/(1 + relaxed) (R6b).
+    for (auto& t : active) t.w /= 1 + relaxed;
+    const Real c_eff = cc.m * (1 + relaxed);
+    // a0 of the problem solved: a0^2 (1 + F - F_glassy) / (1 + F).
+    const Real a0_eff = a0.m * sqrt((1 + creep_ratio - glassy_f) / (1 + creep_ratio));
+    Solution s{};
+    s.a_long_term = a0.m;
+    s.converged = true;
+    if (active.empty()) {
+      s.a = a0_eff;
+      s.f0 = c1.m * a0_eff * a0_eff / 4;
+      s.hertz.emplace_back(units, c1.m, a0_eff, Real(0), Real(0), Real(0),
+                           creep_ratio - glassy_f, cc.m);
+    } else {
+      const auto merged = detail::merge_spectrum(std::move(active));
+      SpectrumLengths<Real> lengths;
+      lengths.creep_ratio = 0;
+      for (const auto& t : merged) {
+        lengths.retardation.push_back(t.q);
+        lengths.creep_ratio += t.w;
+      }
+      for (const auto& t : detail::convert_spectrum(
+               merged, detail::SpectrumDirection::creep_to_relaxation, Real(1), Real(1)))
+        lengths.relaxation.push_back(t.q);
+      const Real creep_active = lengths.creep_ratio;
+      // (S8) load: a^2 + 2 G0 = a0^2, i.e. h(A) = A^2 + 2 G0(A a0) / a0^2 - 1, A = a / a0.
+      auto h = [&](Real A) {
+        const auto st = spectrum_strip(A * a0_eff, lengths);
+        return A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1;
+      };
+      Real lo = 1 / sqrt(1 + creep_active), hi = Real(1);
+      Real h_lo = h(lo), h_hi = h(hi);
+      Real A = hi;
+      int iterations = 0;
+      bool converged = true;
+      if (h_lo >= 0) {
+        A = lo;
+      } else if (h_hi <= 0) {
+        A = hi;
+      } else {
+        std::uintmax_t max_iter = static_cast<std::uintmax_t>(options_.max_iterations);
+        const auto bracket = boost::math::tools::toms748_solve(
+            h, lo, hi, h_lo, h_hi,
+            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2),
+            max_iter);
+        iterations = static_cast<int>(max_iter);
+        A = (bracket.first + bracket.second) / 2;
+        using std::abs;
+        converged = abs(bracket.second - bracket.first) <= 8 * eps * abs(A);
+      }
+      const Real a = A * a0_eff;
+      const auto st = spectrum_strip(a, lengths);
+      using std::abs;
+      s.a = a;
+      s.b = st.b;
+      s.g = st.g0;
+      s.f0 = c1.m * a0_eff * a0_eff / 4;  // (33) with (S8)
+      // (S10): the centroid of p from the axis, xbar = b + centroid.
+      const Real xbar = st.b + st.centroid;
+      s.chi = c1.m * xbar;
+      s.converged = converged && st.residual <= 64 * eps * Real(2 * merged.size() + 1);
+      s.iterations = iterations;
+      s.residual = abs(A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1);
+      s.linear_residual = st.residual;
+      s.amplification = st.amplification;
+      s.active_terms = static_cast<int>(merged.size());
+      s.spectrum.emplace_back(units, c1.m, a, st, lengths, c_eff);
+    }
+    const int length = units.length, area = 2 * length, curvature = units.curvature;
+    const auto in = [&](Real x, int exponent, std::string_view what) {
+      return detail::representable(x, exponent, what, inputs);
+    };
+    const Real mean_pressure = load.m / (2 * s.a);
+    s.a_long_term =
+        in(s.a_long_term, length, "the long-term half width a0 = sqrt(4 c (1+F) load/c1)");
+    s.a = in(s.a, length, "the contact half width a");
+    s.b = in(s.b, length, "the offset b of the contact");
+    s.g = in(s.g, area, "G0 of (S8)");
+    s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
+    s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
+    in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
+    return s;
+  }
+
   Material material_;
   PlaneOptions options_;
 };
 
-template <RealScalar Real, SingleTimeModel Material, class Quadrature>
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scene) const
     -> Solution {
+  if constexpr (!SingleTimeModel<Material>) {
+    return solve_spectrum(scene);
+  } else {
   scene.validate();
   // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic).
   const Real c = material_.instantaneous_compliance();
@@ -254,12 +428,13 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
   s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
   in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
   return s;
+  }
 }
 
 /// The scalar deduced from the material: PlaneSolver solver(StandardLinearSolid<double>(...)).
-template <SingleTimeModel Material>
+template <ConstitutiveModel Material>
 PlaneSolver(Material) -> PlaneSolver<typename Material::real_type, Material>;
-template <SingleTimeModel Material>
+template <ConstitutiveModel Material>
 PlaneSolver(Material, PlaneOptions) -> PlaneSolver<typename Material::real_type, Material>;
 
 /// The common case: double precision, standard linear solid, 24-point Gauss-Legendre panels.

@@ -1,0 +1,263 @@
+// viscoroll: the strip of a material with a discrete spectrum (M retardation times), in closed
+// form given its half width: the generalisation of Eqs. (32)-(37) derived in docs/theory.md,
+// section 12 ((S1)-(S10)).
+//
+// With lambda_k = V tau_k the retardation lengths and mu_i = V rho_i the relaxation lengths (the
+// zeros of the creep function's transform, interlacing: mu_1 < lambda_1 < mu_2 < ... < lambda_M),
+// the pseudo-pressure is (S4)
+//   p* = C1/(2 pi) [ (a^2 - xi^2) + Pi_h(D) + (Pi_g(D) - b) xi ] / sqrt(a^2 - xi^2)
+// (finite parts; D = d/dxi acting on 1/sqrt and xi/sqrt), Pi_h, Pi_g polynomials of degree M - 1
+// with Pi_g(0) = Lambda_1 = sum lambda_k. The unknowns are their values at the relaxation rates,
+// u_i = Pi_h(1/mu_i), w_i = Pi_g(1/mu_i), and b; the equations are the trailing-edge condition
+// of each relaxation length (S6), the leading-edge condition of each retardation length (S7) and
+// Pi_g(0) = Lambda_1, a linear system of order 2M + 1. The pressure is a weighted sum of M
+// one-term strips (S9), each an instance of StripPressure.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/strip.hpp>
+#include <viscoroll/special/bessel_ratio.hpp>
+
+namespace viscoroll {
+
+/// The lengths of a spectrum at one speed, in one unit of length: retardation lengths
+/// lambda_k = V tau_k and relaxation lengths mu_i = V rho_i, both ascending and interlacing
+/// (mu_1 < lambda_1 < mu_2 < ... < lambda_M), and the creep ratio F = sum f_k.
+template <RealScalar Real>
+struct SpectrumLengths {
+  std::vector<Real> retardation;
+  std::vector<Real> relaxation;
+  Real creep_ratio{};
+};
+
+/// The closed-form strip of a spectrum at half width a (S5)-(S8), lengths in the caller's unit:
+/// u_i = A_i Pi_h(1/mu_i) (a length squared) and w_i = A_i (Pi_g(1/mu_i) - b), the odd
+/// coefficient of the term's (32) (a length), the offset
+/// b, G0 = Pi_h(0) (the G of Eq. (33): F0 = C1 (a^2/4 + G0/2)) and Pi_h'(0) (a length cubed, in
+/// the first moment (S8)), and the weights A_i of the pressure's partial fractions (S9).
+template <RealScalar Real>
+struct SpectrumStrip {
+  std::vector<Real> u, w, weight;
+  Real b{}, g0{};
+  Real centroid{};  ///< int (x - b) p dx / int p dx, the pressure's centroid ahead of the centre (S10)
+  Real residual{};  ///< max |X r - rhs| / (|X| |r| + |rhs|) of the linear solve (S5)
+  /// Amplification of rounding in the pressure (S9), sum_i |A_i| (1 for one term).
+  Real amplification{};
+};
+
+namespace detail {
+
+/// (S10) M_i / pi = int (xi - mu_i) phi_i(xi) / sqrt(1 - xi^2) dxi / pi in units of a (a = 1):
+/// phi_i = even (1 - xi^2) + odd xi + g, alpha = 1/mu_i. With (S6) it equals
+/// even e1/alpha - odd e1 + g e0, e1 = I1(alpha)/alpha - 1/2, e0 = (I0(alpha) - 1)/alpha, which
+/// is summed by its series for alpha <= 1 (the direct form cancels as mu_i grows); else
+/// odd/2 - mu_i (even/2 + g).
+template <class Real>
+Real spectrum_term_moment(Real even, Real odd, Real g, Real alpha, Real mu) {
+  if (alpha > 1) return odd / 2 - mu * (even / 2 + g);
+  // e1 = (1/2) sum_{j>=1} (alpha/2)^{2j} / (j! (j+1)!),  e0 = (1/alpha) sum_{j>=1} (alpha/2)^{2j} / (j!)^2.
+  const Real q = alpha * alpha / 4;
+  Real t1 = 1, t0 = 1, e1 = 0, e0 = 0;  // t1 = q^j/(j!(j+1)!), t0 = q^j/(j!)^2
+  for (int j = 1; j <= 40; ++j) {
+    t1 *= q / Real(j * (j + 1));
+    t0 *= q / Real(j * j);
+    e1 += t1;
+    e0 += t0;
+    if (t0 <= std::numeric_limits<Real>::epsilon() * e0 / 4) break;
+  }
+  e1 /= 2;
+  // e0/alpha^0: e0 = (sum)/alpha; e1/alpha: both divide a series starting at alpha^2 by alpha.
+  return even * (e1 / alpha) - odd * e1 + g * (e0 / alpha);
+}
+
+/// Solves the n x n system X x = rhs (row-major X) by Gaussian elimination with partial pivoting,
+/// in place; returns x in rhs. Small dense systems only (n = 2M + 1).
+template <class Real>
+void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
+  using std::abs;
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t pivot = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (abs(X[r * n + c]) > abs(X[pivot * n + c])) pivot = r;
+    if (pivot != c) {
+      for (std::size_t k = 0; k < n; ++k) std::swap(X[c * n + k], X[pivot * n + k]);
+      std::swap(rhs[c], rhs[pivot]);
+    }
+    const Real d = X[c * n + c];
+    for (std::size_t r = c + 1; r < n; ++r) {
+      const Real factor = X[r * n + c] / d;
+      if (factor == 0) continue;
+      for (std::size_t k = c; k < n; ++k) X[r * n + k] -= factor * X[c * n + k];
+      rhs[r] -= factor * rhs[c];
+    }
+  }
+  for (std::size_t c = n; c-- > 0;) {
+    Real sum = rhs[c];
+    for (std::size_t k = c + 1; k < n; ++k) sum -= X[c * n + k] * rhs[k];
+    rhs[c] = sum / X[c * n + c];
+  }
+}
+
+}  // namespace detail
+
+/// Solves (S5)-(S7) at half width a > 0. Every length of `lengths` and a in one unit; the
+/// unknowns are formed in units of a and returned in the caller's.
+template <RealScalar Real>
+SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths) {
+  using std::abs;
+  const auto& mu = lengths.relaxation;
+  const auto& lambda = lengths.retardation;
+  const std::size_t m = mu.size(), n = 2 * m + 1;
+  std::vector<Real> X(n * n, Real(0)), rhs(n, Real(0));
+  const auto at = [&X, n](std::size_t r, std::size_t c) -> Real& { return X[r * n + c]; };
+  // (S9) A_i = prod_{j != i} mu_i / (mu_i - mu_j) = l_i(0), the weights of the partial fractions.
+  std::vector<Real> weight(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    Real w = 1;
+    for (std::size_t j = 0; j < m; ++j)
+      if (j != i) w *= mu[i] / (mu[i] - mu[j]);
+    weight[i] = w;
+  }
+  // (S5) The glassy part of Pi_g, exact: omega_i = A_i N(1/mu_i), N(z) = (1 - prod_k (1 -
+  // lambda_k z))/z - Lambda_1, which makes every leading-edge condition (S7) hold with b = 0 and
+  // Pi_h = 0. With P_i = prod_k (1 - lambda_k/mu_i) (each factor (mu_i - lambda_k)/mu_i, no
+  // cancellation), A_i (Lambda_1 - mu_i) + omega_i = -A_i mu_i P_i.
+  std::vector<Real> product(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    Real p = 1;
+    for (std::size_t k = 0; k < m; ++k) p *= (mu[i] - lambda[k]) / mu[i];
+    product[i] = p;
+  }
+  // Unknowns U_i = A_i u_i / a^2, W_i = (A_i (w_i - Lambda_1) - omega_i) / a, b / a.
+  for (std::size_t i = 0; i < m; ++i) {
+    // (S6) trailing edge of relaxation length mu_i, times A_i / I0(a/mu_i):
+    //   U_i - r_i W_i + r_i A_i b = -r_i A_i mu_i P_i,  r_i = I1/I0(a / mu_i).
+    const Real mu_i = mu[i] / a;
+    const Real r = special::bessel_i1_over_i0(1 / mu_i);
+    at(i, i) = 1;
+    at(i, m + i) = -r;
+    at(i, 2 * m) = r * weight[i];
+    rhs[i] = -r * weight[i] * mu_i * product[i];
+  }
+  for (std::size_t k = 0; k < m; ++k) {
+    // (S7) leading edge of retardation length lambda_k, over K0(a/lambda_k) (1 + s_k) Psi_k:
+    //   sum_i c_ki (U_i + s_k W_i) - (s_k / Psi_k) b = 0,
+    //   c_ki = lambda_k / (lambda_k - mu_i),  Psi_k = prod_j (1 - mu_j / lambda_k),
+    //   s_k = K1/K0(a/lambda_k).
+    const Real lam = lambda[k] / a;
+    const Real s = special::bessel_k1_over_k0(1 / lam);
+    const Real row = 1 / (1 + s);
+    Real inv_psi = 1;
+    for (std::size_t j = 0; j < m; ++j) inv_psi *= lambda[k] / (lambda[k] - mu[j]);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Real c = lambda[k] / (lambda[k] - mu[i]);
+      at(m + k, i) = c * row;
+      at(m + k, m + i) = s * c * row;
+    }
+    at(m + k, 2 * m) = -s * inv_psi * row;
+  }
+  // Pi_g(0) = sum_i A_i w_i = Lambda_1 (S4), with sum_i A_i = 1 and sum_i omega_i = N(0) = 0:
+  // sum_i W_i = 0.
+  for (std::size_t i = 0; i < m; ++i) at(2 * m, m + i) = 1;
+  rhs[2 * m] = 0;
+  const std::vector<Real> X0 = X, rhs0 = rhs;
+  detail::solve_dense(X, rhs, n);
+  const std::vector<Real>& x = rhs;
+
+  SpectrumStrip<Real> out;
+  out.u.resize(m);
+  out.w.resize(m);
+  out.weight = weight;
+  Real g0 = 0, moment = 0;
+  const Real b = x[2 * m];
+  for (std::size_t i = 0; i < m; ++i) {
+    // The term's (32): even = A_i, odd = A_i (w_i - b) = A_i mu_i (1 - P_i) - A_i b + W_i, g = U_i
+    // (S9).
+    const Real odd = weight[i] * (mu[i] / a) * (1 - product[i]) - weight[i] * b + x[m + i];
+    out.u[i] = x[i] * a * a;
+    out.w[i] = odd * a;
+    g0 += x[i];  // G0 = Pi_h(0) = sum_i A_i u_i (S8)
+    moment += detail::spectrum_term_moment(weight[i], odd, x[i], a / mu[i], mu[i] / a);
+  }
+  out.b = b * a;
+  out.g0 = g0 * a * a;
+  // (S10): int (x - b) p dx / int p dx = sum_i M_i / (pi (1/2 + G0/a^2)), in units of a.
+  out.centroid = (moment / (Real(1) / 2 + g0)) * a;
+  // Relative residual of the solve, in the (row-scaled) system.
+  Real worst = 0, row_max = 0, x_max = 0, rhs_max = 0;
+  for (std::size_t r = 0; r < n; ++r) {
+    Real sum = -rhs0[r], row_sum = 0;
+    for (std::size_t c = 0; c < n; ++c) {
+      sum += X0[r * n + c] * x[c];
+      row_sum += abs(X0[r * n + c]);
+    }
+    worst = std::max(worst, abs(sum));
+    row_max = std::max(row_max, row_sum);
+    rhs_max = std::max(rhs_max, abs(rhs0[r]));
+  }
+  for (const Real v : x) x_max = std::max(x_max, abs(v));
+  out.residual = worst / (row_max * x_max + rhs_max);
+  Real amp = 0;
+  for (const Real w : weight) amp += abs(w);
+  out.amplification = amp;
+  return out;
+}
+
+/// Pressure on the strip of a spectrum (S9): p = sum_i A_i p_i, p_i the one-term strip of
+/// relaxation length mu_i with G = u_i and odd coefficient w_i - b, each a StripPressure.
+template <RealScalar Real, class Quadrature>
+requires QuadratureRule<Quadrature, Real>
+class SpectrumStripPressure {
+ public:
+  /// All arguments in `units` (StripUnits), as StripPressure's.
+  SpectrumStripPressure(StripUnits units, Real c1, Real a, const SpectrumStrip<Real>& strip,
+                        const SpectrumLengths<Real>& lengths, Real compliance)
+      : units_(units), a_(a), b_(strip.b), layer_(lengths.relaxation) {
+    const Real creep = lengths.creep_ratio;
+    for (std::size_t i = 0; i < strip.u.size(); ++i)
+      terms_.emplace_back(units, c1, a, strip.b, strip.u[i], (1 + creep) * lengths.relaxation[i],
+                          creep, compliance, strip.weight[i], strip.w[i]);
+  }
+
+  Real half_width() const { return times_power_of_two(a_, units_.length); }
+  Real offset() const { return times_power_of_two(b_, units_.length); }
+  Real leading_edge() const { return times_power_of_two(b_ + a_, units_.length); }
+  Real trailing_edge() const { return times_power_of_two(b_ - a_, units_.length); }
+
+  /// (S9): the contact pressure at x (caller's units); zero outside the strip.
+  Real pressure(Real x) const {
+    Real p = 0;
+    for (const auto& t : terms_) p += t.pressure(x);
+    return p;
+  }
+  /// dp/dx, the sum of the terms' slopes (each from its own Eq. (7)).
+  Real pressure_slope(Real x) const {
+    Real s = 0;
+    for (const auto& t : terms_) s += t.pressure_slope(x);
+    return s;
+  }
+
+  /// The largest pressure and where it sits (samples clustered at the ends and through each
+  /// relaxation layer at the leading edge, then the root of the slope).
+  PressurePeak<Real> peak() const {
+    std::vector<Real> layers;
+    for (const Real l : layer_)
+      if (l < a_) layers.push_back(times_power_of_two(l, units_.length));
+    return detail::strip_peak(
+        trailing_edge(), leading_edge(), leading_edge(), layers,
+        [this](Real x) { return pressure(x); }, [this](Real x) { return pressure_slope(x); },
+        true);
+  }
+
+ private:
+  StripUnits units_;
+  Real a_, b_;
+  std::vector<Real> layer_;
+  std::vector<StripPressure<Real, Quadrature>> terms_;
+};
+
+}  // namespace viscoroll
