@@ -629,7 +629,39 @@ double required_c2(const Problem& p, const char* method) {
   return *p.c2;
 }
 
+/// The prony material at `temperature` (the reference material when there is no shift law).
+viscoroll::PronyRelaxation<double> prony_at(const Problem& p, double temperature);
+
 int run_plane(const Problem& p, Output& out) {
+  if (p.prony)
+    return run_sweeps(
+        p, p.temperatures, out,
+        [&](double speed) {
+          return viscoroll::PlaneScene<double>{.c1 = p.c1, .load = p.load, .speed = speed};
+        },
+        [&](double temperature) { return viscoroll::PlaneSolver(prony_at(p, temperature)); },
+        [&](double temperature, const auto& scene, const auto& s, double seconds) {
+          const auto peak = s.peak();
+          const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
+          out.add({{"method", std::string("plane")},
+                   {"temperature", temperature},
+                   {"a_T", a_t},
+                   {"speed", scene.speed},
+                   {"a0", s.a},
+                   {"b0", s.b},
+                   {"a_long_term", s.a_long_term},
+                   {"chi", s.chi},
+                   {"pmax", peak.pressure},
+                   {"pmax_x", peak.x},
+                   {"active_terms", static_cast<long long>(s.active_terms)},
+                   {"seconds", seconds},
+                   {"converged", s.converged},
+                   {"iterations", static_cast<long long>(s.iterations)},
+                   {"residual", s.residual}});
+          if (!s.converged)
+            out.note("viscoroll-solve: plane solution for " +
+                     temperature_label(p, temperature, scene.speed) + " did not converge");
+        });
   return run_sweeps(
       p, p.tau, out,
       [&](double speed) {

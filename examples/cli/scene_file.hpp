@@ -89,10 +89,10 @@ struct Scene {
   std::vector<double> temperatures;
 };
 
-/// The message for a prony material with a solver that takes one relaxation time.
+/// The message for a prony material with the line solver, which takes one relaxation time.
 inline std::string prony_needs_bem() {
-  return "material.model 'prony': the plane and line solvers take one relaxation time so far; use "
-         "--method bem";
+  return "material.model 'prony': the line solver takes one relaxation time so far; use "
+         "--method plane or --method bem";
 }
 
 /// The largest scene file read, in bytes.
@@ -563,7 +563,7 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
     throw std::invalid_argument("viscoroll-solve: " + source + ": " + message);
   };
   const std::string m = method_name(method);
-  if (std::holds_alternative<PronyModel>(scene.material) && method != Method::bem)
+  if (std::holds_alternative<PronyModel>(scene.material) && method == Method::line)
     fail(prony_needs_bem());
   if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)
     fail("roller.profile = \"cylinder\" suits the plane method only, not " + m +

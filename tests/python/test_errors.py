@@ -130,8 +130,8 @@ def test_from_json_of_a_prony_scene_raises_the_command_lines_message(tmp_path, m
         vr.Scene.from_json(path)
     message = str(error.value)
     assert message.startswith(str(path) + ": ")
-    assert ("material.model 'prony': the plane and line solvers take one relaxation time so far; "
-            "use --method bem") in message
+    assert ("material.model 'prony': the line solver takes one relaxation time so far; "
+            "use --method plane or --method bem") in message
 
 
 def test_from_json_of_the_shipped_prony_scene_raises(scenes_dir):
