@@ -235,7 +235,7 @@ class PlaneSolver {
   /// (strip_is_glassy: dropped, its creep never starts) or active; the active terms' relaxation
   /// lengths are the zeros of (R7), and (S5)-(S8) with the load (S8) give a by TOMS 748 in
   /// [glassy, long-term] Hertz widths of the active problem.
-  Solution solve_spectrum(const PlaneScene<Real>& scene) const {
+  Solution solve_spectrum(const PlaneScene<Real>& scene) const requires(!SingleTimeModel<Material>) {
     scene.validate();
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
