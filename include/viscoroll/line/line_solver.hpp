@@ -20,8 +20,11 @@
 #include <concepts>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
+#include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -130,21 +133,37 @@ class LineSolver {
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + memory.f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
-        problem(scene, slow, memory.f, scene.speed * memory.tau), options_.terms, options_.basis,
+        problem(Units{scene.c1, scene.c2, 0, 0}, slow, memory.f, scene.speed * memory.tau),
+        options_.terms, options_.basis,
         options_.oversampling);
   }
 
  private:
-  static LineProblem<Real> problem(const LineScene<Real>& scene,
-                                   const StaticLineContact<Real>& slow, Real f, Real vtau) {
-    return {
-        scene.c1, scene.c2, vtau, f, slow.a0, slow.l, scene.c1 * slow.a0 * slow.a0 * slow.l / 3};
+  /// The solver's units (docs/theory.md, "Scaling"): c1 and c2 in a unit of curvature
+  /// 2^curvature in which c1 lies in [1, 2), lengths in a unit 2^length near the long-term a0,
+  /// d in 2^(curvature + 2 length). Powers of two: every product and quotient rounds as in the
+  /// caller's units wherever those neither overflow nor underflow.
+  struct Units {
+    Real c1, c2;
+    int curvature, length;
+  };
+
+  static LineProblem<Real> problem(const Units& u, const StaticLineContact<Real>& slow, Real f,
+                                   Real vtau) {
+    return {u.c1, u.c2, vtau, f, slow.a0, slow.l, u.c1 * slow.a0 * slow.a0 * slow.l / 3};
+  }
+
+  /// The shape with a_ref and l in the caller's units (for the messages of the warnings).
+  static LineShape<Real> caller_shape(LineShape<Real> shape, const Units& u) {
+    shape.a_ref = times_power_of_two(shape.a_ref, u.length);
+    shape.l = times_power_of_two(shape.l, u.length);
+    return shape;
   }
 
   /// A solution of the scene with shape and penetration d: converged, a root, no iterations;
-  /// closed_form and make set what differs.
-  static Solution solution(const LineScene<Real>& scene, const StaticLineContact<Real>& slow,
-                           Real c, Real f, Real vtau, LineShape<Real> shape, Real d) {
+  /// closed_form and make set what differs. In the solver's units until solve() converts it.
+  static Solution solution(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
+                           Real vtau, LineShape<Real> shape, Real d) {
     return Solution{.shape = std::move(shape),
                     .d = d,
                     .a_long_term = slow.a0,
@@ -157,22 +176,22 @@ class LineSolver {
                     .iterations = 0,
                     .residual = Real(0),
                     .warnings = {},
-                    .c1 = scene.c1,
+                    .c1 = u.c1,
                     .vtau = vtau,
                     .f = f,
                     .compliance = c};
   }
 
-  Solution closed_form(const LineScene<Real>& scene, const StaticLineContact<Real>& s,
+  Solution closed_form(const Units& u, const StaticLineContact<Real>& s,
                        const StaticLineContact<Real>& slow, Real c, Real f,
                        const char* reason) const {
     using std::log;
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol = solution(scene, slow, c, f, Real(0), shape, s.d);
+    Solution sol = solution(u, slow, c, f, Real(0), shape, s.d);
     sol.reason = reason;
-    add_warnings(sol);
+    add_warnings(sol, u);
     return sol;
   }
 
@@ -193,19 +212,26 @@ class LineSolver {
   /// rolling() from `start` where it can seed the iteration, else from the cold start; a seeded
   /// iteration that stops short is run again from the cold start. The result's warnings say when
   /// a seed was set aside, so that a bad seed never decides the answer.
-  Solution rolling_from(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
-                        Real f, Real vtau, const Solution* start) const {
-    if (start == nullptr) return rolling(scene, slow, c, f, vtau, nullptr);
+  Solution rolling_from(const LineScene<Real>& scene, const Units& u,
+                        const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
+                        const Solution* given) const {
+    if (given == nullptr) return rolling(scene, u, slow, c, f, vtau, nullptr);
+    // The seed in the solver's units (a shape from a far scene may leave the range there).
+    Solution seed = *given;
+    seed.shape.a_ref = times_power_of_two(seed.shape.a_ref, -u.length);
+    seed.shape.l = times_power_of_two(seed.shape.l, -u.length);
+    seed.d = times_power_of_two(seed.d, -u.curvature - 2 * u.length);
+    const Solution* start = &seed;
     if (!usable_seed(*start)) {
-      Solution cold = rolling(scene, slow, c, f, vtau, nullptr);
+      Solution cold = rolling(scene, u, slow, c, f, vtau, nullptr);
       cold.warnings.push_back(
           "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
           "solved from the cold start");
       return cold;
     }
-    Solution seeded = rolling(scene, slow, c, f, vtau, start);
+    Solution seeded = rolling(scene, u, slow, c, f, vtau, start);
     if (seeded.converged) return seeded;
-    Solution cold = rolling(scene, slow, c, f, vtau, nullptr);
+    Solution cold = rolling(scene, u, slow, c, f, vtau, nullptr);
     cold.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
                             "): solved again from the cold start");
     return cold;
@@ -220,15 +246,47 @@ class LineSolver {
     };
     return s.converged && !s.shape.alpha.empty() && finite(s.shape.alpha) && finite(s.shape.beta) &&
            (boost::math::isfinite)(s.shape.l) && s.shape.l > 0 &&
-           (boost::math::isfinite)(s.shape.a_ref) && s.shape.a_ref > 0 &&
-           (boost::math::isfinite)(s.d);
+           (boost::math::isfinite)(s.shape.a_ref) &&
+           s.shape.a_ref >= (std::numeric_limits<Real>::min)() && (boost::math::isfinite)(s.d);
   }
 
-  Solution rolling(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
-                   Real f, Real vtau, const Solution* start) const {
+  /// a/a0 and b/a0 of the plane solution at V tau/a0 = v (Eq. P5), the seed of the cold start.
+  struct PlaneSeed {
+    Real a, b;
+  };
+  /// The plane solver with the line scene's material, curvature and speed, and the load whose
+  /// long-term half width is the line's a0 (in the caller's units, where they are representable);
+  /// else an equivalent scene of order-one numbers with the same f and V tau/a0 (the plane
+  /// solution depends on nothing else, docs/theory.md "Scaling").
+  PlaneSeed plane_seed(const LineScene<Real>& scene, const Units& u,
+                       const StaticLineContact<Real>& slow, Real c, Real f, Real vtau) const {
+    using std::abs;
+    using limits = std::numeric_limits<Real>;
+    const Real a0 = times_power_of_two(slow.a0, u.length);
+    const Real w_plane = scene.c1 * a0 * a0 / (4 * (1 + f) * c);  // plane a0 = slow.a0
+    if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() && a0 >= (limits::min)()) {
+      try {
+        const PlaneSolver<Real, Material> plane(material_);
+        const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
+        return {ps.a / a0, ps.b / a0};
+      } catch (const std::invalid_argument&) {
+        // a number of the plane solution not representable: the scene of order-one numbers
+      }
+    }
+    const Real pi = boost::math::constants::pi<Real>();
+    // c = (1 - 0)/(2 pi mu_D) = 1, tau = 1, C1 = 1, 4 c (1 + f) W / C1 = 1: a0 = 1, V tau = v.
+    const PlaneSolver<Real, StandardLinearSolid<Real>> plane(
+        StandardLinearSolid<Real>(1 / (2 * pi), Real(0), f, Real(1)));
+    const auto ps = plane.solve(PlaneScene<Real>{Real(1), 1 / (4 * (1 + f)), vtau / slow.a0});
+    return {ps.a / ps.a_long_term, ps.b / ps.a_long_term};
+  }
+
+  Solution rolling(const LineScene<Real>& scene, const Units& u,
+                   const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
+                   const Solution* start) const {
     using std::log;
     using std::pow;
-    const LineProblem<Real> prob = problem(scene, slow, f, vtau);
+    const LineProblem<Real> prob = problem(u, slow, f, vtau);
     LineShape<Real> shape;
     Real d;
     std::vector<int> stages;
@@ -242,11 +300,9 @@ class LineSolver {
       // then continuation in N from two terms up: each stage starts from the previous solution,
       // which keeps the iteration on the branch of smooth solutions (a cold start at large N can
       // land on another root of the discrete equations, docs/line-solver.md).
-      const PlaneSolver<Real, Material> plane(material_);
-      const Real w_plane = scene.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * c);  // plane a0 = slow.a0
-      const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
-      const Real ratio = pow(ps.a / slow.a0, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
-      shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b / slow.a0}};
+      const PlaneSeed ps = plane_seed(scene, u, slow, c, f, vtau);
+      const Real ratio = pow(ps.a, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
+      shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b}};
       d = slow.d * ratio * ratio;
       stages = continuation_stages(options_.terms);
     }
@@ -268,7 +324,7 @@ class LineSolver {
       if (!res(x, r)) {
         if (k == 0) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
         if (!res(x, r))
-          return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain",
+          return failure(u, slow, c, f, vtau, res, x, "initial guess outside the domain",
                          iterations);
       }
       numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
@@ -285,32 +341,32 @@ class LineSolver {
         }
       }
       if (out.undefined)
-        return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
+        return failure(u, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
       if (last)
-        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
+        return make(u, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
     }
-    return failure(scene, slow, c, f, vtau,
+    return failure(u, slow, c, f, vtau,
                    LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
                                                   options_.oversampling),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 
-  Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
+  Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
                 Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                 const Vector& r, bool converged, std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
-    Solution sol = solution(scene, slow, c, f, vtau, res.shape(x), res.penetration(x));
+    Solution sol = solution(u, slow, c, f, vtau, res.shape(x), res.penetration(x));
     sol.converged = converged;
     sol.root = root;
     sol.reason = std::move(reason);
     sol.iterations = iterations;
     sol.residual = rmax;
     sol.chi = rolling_friction(sol);
-    add_warnings(sol);
+    add_warnings(sol, u);
     if (converged && !root)
       sol.warnings.push_back(
           "the line equations have no root here: a least-squares minimum with max |r| = " +
@@ -320,11 +376,11 @@ class LineSolver {
     return sol;
   }
 
-  Solution failure(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
+  Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c,
                    Real f, Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                    const char* reason, int iterations) const {
     Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
-    return make(scene, slow, c, f, vtau, res, x, r, false, reason, iterations);
+    return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
   }
 
   /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q) = (C1/4) strip_first_moment
@@ -349,8 +405,9 @@ class LineSolver {
     return sol.c1 * num / den;
   }
 
-  static void add_warnings(Solution& sol) {
-    for (auto& w : line_domain_warnings(sol.shape)) sol.warnings.push_back(std::move(w));
+  static void add_warnings(Solution& sol, const Units& u) {
+    for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
+      sol.warnings.push_back(std::move(w));
   }
 
   Material material_;
@@ -367,21 +424,68 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
   const Real c = material_.instantaneous_compliance();
   const PronyTerm<Real> memory = detail::single_memory_term(material_);
   const Real f = memory.f;
-  const Real vtau = scene.speed * memory.tau;
-  const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
+  const auto inputs = [&] {
+    return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
+           ", load = " + detail::format_value(scene.load) +
+           ", speed = " + detail::format_value(scene.speed) +
+           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+           ", tau = " + detail::format_value(memory.tau);
+  };
+  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+  // Scaling (docs/theory.md, "Scaling"): C1, C2 in the unit of curvature of C1's power of two,
+  // lengths in a power of two near a0; every product below rounds as in the caller's units.
+  const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
+  const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + f);
+  detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
+  const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
+  // Long-term static contact, compliance (1 + f) c, Eq. (47) with (52).
+  const auto slow_units = static_line_contact_in_units<Real>(
+      k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
+  const Units u{k1.m, c2, k1.e, slow_units.length};
+  const StaticLineContact<Real> slow = slow_units.contact;
+  const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+  const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
   const Real eps = std::numeric_limits<Real>::epsilon();
-  if constexpr (Material::is_viscoelastic) {
-    if (f > 0 && vtau > 0) {
-      if (strip_is_glassy(vtau, f, slow.a0)) {
-        // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
-        const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
-        // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
-        return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");
+  Solution sol = [&] {
+    if constexpr (Material::is_viscoelastic) {
+      if (f > 0 && vtau > 0) {
+        if (strip_is_glassy(vtau, f, slow.a0)) {
+          // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
+          const auto fast = static_line_contact_in_units<Real>(
+              k1.m, c2, {cc.m * load.m, cc.e + load.e}, k1.e);
+          const int shift = fast.length - u.length;  // to the units of the long-term contact
+          const StaticLineContact<Real> glassy{times_power_of_two(fast.contact.a0, shift),
+                                               times_power_of_two(fast.contact.l, shift),
+                                               times_power_of_two(fast.contact.d, 2 * shift)};
+          // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
+          return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
+        }
+        if (vtau > eps * slow.a0) return rolling_from(scene, u, slow, c, f, vtau, start);
       }
-      if (vtau > eps * slow.a0) return rolling_from(scene, slow, c, f, vtau, start);
     }
-  }
-  return closed_form(scene, slow, slow, c, f, "static (closed form)");
+    return closed_form(u, slow, slow, c, f, "static (closed form)");
+  }();
+  // The solution in the caller's units: a converged one's numbers each normal and finite (b and
+  // chi may be zero), else an error naming the inputs (docs/errors.md); a non-converged one
+  // scaled back as it is.
+  const int length = u.length, curvature = u.curvature;
+  const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
+    if (!sol.converged) return times_power_of_two(x, exponent);
+    return detail::representable(x, exponent, what, inputs, zero_allowed);
+  };
+  const Real a_origin = sol.shape.a(Real(0)), b_origin = sol.shape.b(Real(0));
+  in(a_origin, length, "the half width a(0)", false);
+  in(b_origin, length, "the offset b(0)", true);
+  sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
+  sol.shape.l = in(sol.shape.l, length, "the half length l", false);
+  sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
+  sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
+  sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
+  sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
+  sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
+  sol.vtau = in(sol.vtau, length, "V tau", true);
+  sol.c1 = scene.c1;
+  return sol;
 }
 
 /// The scalar deduced from the material: LineSolver solver(StandardLinearSolid<double>(...)).
