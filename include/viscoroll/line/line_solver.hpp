@@ -262,9 +262,13 @@ class LineSolver {
                        const StaticLineContact<Real>& slow, Real c, Real f, Real vtau) const {
     using std::abs;
     using limits = std::numeric_limits<Real>;
+    // W = C1 a0^2 / (4 (1 + f) c), plane a0 = slow.a0, formed as its power-of-two scaled self.
+    const Binary<Real> cc = binary(c);
+    const Real w_plane = times_power_of_two(
+        u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m), u.curvature + 2 * u.length - cc.e);
     const Real a0 = times_power_of_two(slow.a0, u.length);
-    const Real w_plane = scene.c1 * a0 * a0 / (4 * (1 + f) * c);  // plane a0 = slow.a0
-    if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() && a0 >= (limits::min)()) {
+    if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() &&
+        (boost::math::isfinite)(a0) && a0 >= (limits::min)()) {
       try {
         const PlaneSolver<Real, Material> plane(material_);
         const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
