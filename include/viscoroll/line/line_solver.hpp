@@ -271,7 +271,7 @@ class LineSolver {
         (boost::math::isfinite)(a0) && a0 >= (limits::min)()) {
       try {
         const PlaneSolver<Real, Material> plane(material_);
-        const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
+        const auto ps = plane.solve(PlaneScene<Real>{.c1 = scene.c1, .load = w_plane, .speed = scene.speed});
         return {ps.a / a0, ps.b / a0};
       } catch (const std::invalid_argument&) {
         // a number of the plane solution not representable: the scene of order-one numbers
@@ -281,7 +281,8 @@ class LineSolver {
     // c = (1 - 0)/(2 pi mu_D) = 1, tau = 1, C1 = 1, 4 c (1 + f) W / C1 = 1: a0 = 1, V tau = v.
     const PlaneSolver<Real, StandardLinearSolid<Real>> plane(
         StandardLinearSolid<Real>(1 / (2 * pi), Real(0), f, Real(1)));
-    const auto ps = plane.solve(PlaneScene<Real>{Real(1), 1 / (4 * (1 + f)), vtau / slow.a0});
+    const auto ps = plane.solve(
+        PlaneScene<Real>{.c1 = Real(1), .load = 1 / (4 * (1 + f)), .speed = vtau / slow.a0});
     return {ps.a / ps.a_long_term, ps.b / ps.a_long_term};
   }
 
@@ -293,22 +294,22 @@ class LineSolver {
     const LineProblem<Real> prob = problem(u, slow, f, vtau);
     LineShape<Real> shape;
     Real d;
-    std::vector<int> stages;
+    // Continuation in N from two terms up: each stage starts from the previous solution, which
+    // keeps the iteration on the branch of smooth solutions (a start far from it at large N can
+    // land on another root of the discrete equations, docs/line-solver.md). The first stage
+    // starts from the seed re-expanded to its terms, so that a seed decides no more than where
+    // the two-term iteration begins: the answer is the cold start's to the iteration's tolerance.
+    const std::vector<int> stages = continuation_stages(options_.terms);
     if (start != nullptr && start->shape.alpha.size() > 0) {
-      // A solution of a nearby scene: straight to the requested discretisation.
+      // A solution of a nearby scene.
       shape = start->shape;
       d = start->d;
-      stages = {options_.terms};
     } else {
-      // Seed: the static contact shrunk and shifted as the plane solution at the same V tau/a0,
-      // then continuation in N from two terms up: each stage starts from the previous solution,
-      // which keeps the iteration on the branch of smooth solutions (a cold start at large N can
-      // land on another root of the discrete equations, docs/line-solver.md).
+      // The static contact shrunk and shifted as the plane solution at the same V tau/a0.
       const PlaneSeed ps = plane_seed(scene, u, slow, c, f, vtau);
       const Real ratio = pow(ps.a, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
       shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b}};
       d = slow.d * ratio * ratio;
-      stages = continuation_stages(options_.terms);
     }
     // The paper's least-squares solution where the equations have no root (the last stage, with
     // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
@@ -326,7 +327,10 @@ class LineSolver {
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
-        if (k == 0) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
+        // The cold start's plane seed outside the domain: the static contact (a seed given by
+        // the caller is not replaced here: rolling_from runs the cold start and says so).
+        if (k == 0 && start == nullptr)
+          x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
         if (!res(x, r))
           return failure(u, slow, c, f, vtau, res, x, "initial guess outside the domain",
                          iterations);
@@ -334,14 +338,30 @@ class LineSolver {
       numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
       iterations += out.iterations;
       const bool last = k + 1 == stages.size();
-      if (last && out.minimum && least_squares) {
-        out = numerics::least_squares_minimum(res, x, r, settings);
+      if (last && least_squares && !out.converged && !out.undefined) {
+        // Stopped short of a root (at a minimum with no root near, without a descent step or at
+        // the iteration limit): the least-squares minimum, whose Newton iteration converges
+        // linearly where the minimum is flat (10 times the iterations).
+        numerics::LeastSquaresOptions<Real> minimisation = settings;
+        minimisation.max_iterations = 10 * settings.max_iterations;
+        out = numerics::least_squares_minimum(res, x, r, minimisation);
         iterations += out.iterations;
-        if (out.converged)
-          out.reason = "least-squares minimum (no root of the line equations here)";
-        if (out.root_near) {
+        // A residual below the root tolerance on the way: Levenberg-Marquardt certifies the root,
+        // or stops at a minimum again, which the minimisation then certifies (at most 4 turns).
+        for (int turn = 0; turn < 4 && out.root_near; ++turn) {
           out = numerics::levenberg_marquardt(res, x, r, settings);
           iterations += out.iterations;
+          if (out.converged || out.undefined || !out.minimum) break;
+          out = numerics::least_squares_minimum(res, x, r, minimisation);
+          iterations += out.iterations;
+        }
+        if (out.converged && !out.root_near && r.cwiseAbs().maxCoeff() > root_tolerance())
+          out.reason = "least-squares minimum (no root of the line equations here)";
+        // Below the root tolerance with no step that lowers |r| (the residual's rounding floor):
+        // a root to the accuracy with which the equations are evaluated.
+        if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= root_tolerance()) {
+          out.converged = true;
+          out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
         }
       }
       if (out.undefined)
@@ -409,9 +429,12 @@ class LineSolver {
     return sol.c1 * num / den;
   }
 
+  /// The domain of the line theory (line_domain_warnings) and the bounds of the rolling contact
+  /// (line_bound_warnings, to the root tolerance).
   static void add_warnings(Solution& sol, const Units& u) {
     for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
       sol.warnings.push_back(std::move(w));
+    for (auto& w : line_bound_warnings(sol, root_tolerance())) sol.warnings.push_back(std::move(w));
   }
 
   Material material_;
