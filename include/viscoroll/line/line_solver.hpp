@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SVD>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <chrono>
 #include <cmath>
@@ -338,6 +339,7 @@ class LineSolver {
       numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
       iterations += out.iterations;
       const bool last = k + 1 == stages.size();
+      bool at_floor = false;  // a root below tolerance that no step improves (at a fold of J)
       if (last && least_squares && !out.converged && !out.undefined) {
         // Stopped short of a root (at a minimum with no root near, without a descent step or at
         // the iteration limit): the least-squares minimum, whose Newton iteration converges
@@ -360,6 +362,7 @@ class LineSolver {
         // Below the root tolerance with no step that lowers |r| (the residual's rounding floor):
         // a root to the accuracy with which the equations are evaluated.
         if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= root_tolerance()) {
+          at_floor = true;
           out.converged = true;
           out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
         }
@@ -369,13 +372,42 @@ class LineSolver {
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
-      if (last)
+      if (last) {
+        // A root is reported converged only where its a posteriori error estimate, the Newton
+        // correction J^+ r, is within what Real carries: at most sqrt(eps) in every unknown (in
+        // float at V tau = 0.01 a0, N = 6, the residual's rounding floor 2e-5 over the smallest
+        // singular value 2e-3 of J moved b(0) by 15%; docs/stability.md).
+        if (out.converged && least_squares && !at_floor &&
+            r.cwiseAbs().maxCoeff() <= root_tolerance()) {
+          const Real estimate = newton_correction(res, x);
+          using std::sqrt;
+          if (!(estimate <= sqrt(std::numeric_limits<Real>::epsilon()))) {
+            out.converged = false;
+            out.reason = "error estimate max |J^+ r| = " + std::to_string(double(estimate)) +
+                         " of the unknowns exceeds sqrt(eps) = " +
+                         std::to_string(double(sqrt(std::numeric_limits<Real>::epsilon()))) +
+                         ": the residual's rounding floor is beyond what this scalar carries "
+                         "here (use a wider scalar)";
+          }
+        }
         return make(u, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
+      }
     }
     return failure(u, slow, c, f, vtau,
                    LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
                                                   options_.oversampling),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
+  }
+
+  /// max |J^+ r| at x (the minimum-norm least-squares Newton correction, by the singular value
+  /// decomposition of the semi-analytic Jacobian): the error estimate of a root. Infinite where
+  /// the Jacobian is undefined.
+  static Real newton_correction(const LineResidual<Real, Quadrature>& res, const Vector& x) {
+    Vector r;
+    Matrix jac;
+    if (!res.jacobian(x, r, jac)) return std::numeric_limits<Real>::infinity();
+    const Eigen::JacobiSVD<Matrix> svd(jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    return svd.solve(r).cwiseAbs().maxCoeff();
   }
 
   Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
