@@ -401,11 +401,23 @@ struct Problem {
   std::optional<viscoroll::PronyRelaxation<double>> prony;
   std::optional<viscoroll::ShiftLaw<double>> shift;
   std::vector<double> temperatures;
+  /// The line method's settings (--oversampling, --basis, --max-iterations): LineOptions.
+  viscoroll::LineOptions line;
 };
+
+/// --oversampling, --basis and --max-iterations into LineOptions (their defaults where not given).
+viscoroll::LineOptions line_options(const SolveOptions& o) {
+  viscoroll::LineOptions line;
+  if (o.oversampling) line.oversampling = static_cast<int>(*o.oversampling);
+  if (o.max_iterations) line.max_iterations = static_cast<int>(*o.max_iterations);
+  if (o.basis == "s") line.basis = viscoroll::LineBasis::s;
+  if (o.basis == "mapped") line.basis = viscoroll::LineBasis::s_mapped;
+  return line;
+}
 
 Problem from_options(const SolveOptions& o) {
   return {*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
-          o.load,    o.speeds, o.grid, o.threads, {},    {},   {}};
+          o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o)};
 }
 
 /// The prony material of a scene file: its terms, or the fit of its DMA file (the report on
@@ -488,6 +500,7 @@ Problem from_scene(const SolveOptions& o) {
   p.method = *method;
   p.grid = o.grid ? o.grid : scene.grid;
   p.threads = o.threads;
+  p.line = line_options(o);
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
   std::visit(
@@ -706,7 +719,7 @@ int line_terms(const Problem& p) {
 /// its chunk (continuation; a closed form carries no more than the solver's own seed).
 int run_line(const Problem& p, Output& out) {
   const double c2 = required_c2(p, "line");
-  viscoroll::LineOptions options;
+  viscoroll::LineOptions options = p.line;
   options.terms = line_terms(p);
   return run_sweeps(
       p, p.tau, out,
@@ -838,6 +851,13 @@ int main(int argc, char** argv) {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     const Problem problem = options.scene.empty() ? from_options(options) : from_scene(options);
+    if (problem.method != Method::line)
+      for (const auto& [given, key] : {std::pair{bool(options.oversampling), "--oversampling"},
+                                       std::pair{!options.basis.empty(), "--basis"},
+                                       std::pair{bool(options.max_iterations), "--max-iterations"}})
+        if (given)
+          throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
+                                      " is valid only with --method line");
     Output out(
         options, problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());

@@ -55,12 +55,18 @@ struct SolveOptions {
   /// --temperature T[,T...] (degrees Celsius): replaces the scene's "temperature"; valid only
   /// with a scene whose material is a prony series with a shift law.
   std::vector<double> temperatures;
+  /// The line method's slow-regime settings (LineOptions; docs/line-solver.md, "Oversampling"):
+  /// --oversampling K (1..8), --basis t2|s|mapped, --max-iterations N (1..100000).
+  std::optional<long> oversampling;
+  std::string basis;  ///< empty: the default, t2
+  std::optional<long> max_iterations;
 };
 
 inline std::string usage() {
   return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
-         "[--csv FILE] [--plot DIR] [--threads N]\n"
+         "[--csv FILE] [--plot DIR] [--threads N] [--oversampling K] [--basis t2|s|mapped] "
+         "[--max-iterations N]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
          "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
          "[--plot DIR] [--threads N]";
@@ -96,7 +102,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
   static const std::set<std::string_view> known = {
       "--method", "--mu-d", "--nu",      "--f",          "--tau",   "--speed",
       "--c1",     "--c2",   "--load",    "--grid",       "--scene", "--format",
-      "--csv",    "--plot", "--threads", "--temperature"};
+      "--csv",    "--plot", "--threads", "--temperature", "--oversampling", "--basis",
+      "--max-iterations"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -136,8 +143,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
         throw std::invalid_argument(
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
-            "--grid, --speed, --temperature, --format, --csv, --plot and --threads may go with "
-            "it)");
+            "--grid, --speed, --temperature, --format, --csv, --plot, --threads, --oversampling, "
+            "--basis and --max-iterations may go with it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -173,6 +180,25 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
       throw std::invalid_argument("viscoroll-solve: --grid expects a positive integer, got '" +
                                   std::string(text) + "'");
     o.grid = n;
+  }
+  // The line method's settings: integers in their ranges, the basis by name.
+  const auto integer = [&](std::string_view key, long lo, long hi) {
+    const std::string_view text = given[key];
+    long n = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || n < lo || n > hi)
+      throw std::invalid_argument("viscoroll-solve: " + std::string(key) + " expects an integer " +
+                                  std::to_string(lo) + " <= N <= " + std::to_string(hi) +
+                                  ", got '" + std::string(text) + "'");
+    return n;
+  };
+  if (given.count("--oversampling")) o.oversampling = integer("--oversampling", 1, 8);
+  if (given.count("--max-iterations")) o.max_iterations = integer("--max-iterations", 1, 100000);
+  if (given.count("--basis")) {
+    o.basis = std::string(given["--basis"]);
+    if (o.basis != "t2" && o.basis != "s" && o.basis != "mapped")
+      throw std::invalid_argument("viscoroll-solve: --basis expects t2, s or mapped, got '" +
+                                  o.basis + "'");
   }
   if (given.count("--threads")) {
     const std::string_view text = given["--threads"];

@@ -531,14 +531,15 @@ TEST_CASE("line solver: (52), (53) and chi (54) from the reconstructed pressure"
 TEST_CASE("line solver: the converged flag is honest", "[line]") {
   using Real = double;
   const Scene<Real> sc;
-  // One Levenberg-Marquardt step per continuation stage (terms 2, 4) from the plane-based seed
-  // leaves a residual of 5.7e-3.
+  // One Levenberg-Marquardt step per continuation stage (terms 2, 4) from the plane-based seed,
+  // then 10 of the least-squares minimisation on the last stage (10 times the cap), leave a
+  // residual of 1.3e-4.
   const auto cut = Solver<Real>(sc.material(), LineOptions{.terms = 4, .max_iterations = 1})
                        .solve(sc.scene(1.0));
   INFO("max_iterations = 1: " << cut.reason << ", residual " << cut.residual);
   CHECK_FALSE(cut.converged);
   CHECK_FALSE(cut.reason.empty());
-  CHECK(cut.iterations == 2);
+  CHECK(cut.iterations == 2 + 10);
   CHECK(cut.residual > 64 * std::sqrt(eps<Real>()));
   const Solver<Real> solver(sc.material(), LineOptions{.terms = 4});
   const auto full = solver.solve(sc.scene(1.0));

@@ -3,6 +3,8 @@
 // (line_solver.hpp) returns it; and the warnings of the line theory's domain of validity.
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
@@ -83,6 +85,35 @@ std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
                        " at y = " + std::to_string(double(y_max)) +
                        " is not small against l = " + std::to_string(double(l)) +
                        " (l/max a(y) < 3): outside the line-contact theory's domain of validity");
+  return warnings;
+}
+
+/// The bounds of a rolling contact of a standard linear solid (docs/theory.md, "Bounds of the
+/// rolling contact"): a(0) <= a0 and l <= l0, the long-term static contact's, and b(0) >= 0. A
+/// warning for each that a converged solution breaks by more than `tolerance` (relative to a0 and
+/// l0; LineSolver passes its root tolerance 64 sqrt(eps)): its discretisation error exceeds its
+/// distance to the bound (in the slow regime, V tau <~ 0.1 a0, at small N; docs/line-solver.md,
+/// "Oversampling"). Empty for a solution that keeps them or has not converged.
+template <RealScalar Real, class Quadrature>
+std::vector<std::string> line_bound_warnings(const LineSolution<Real, Quadrature>& s,
+                                             Real tolerance) {
+  std::vector<std::string> warnings;
+  if (!s.converged) return warnings;
+  const Real a0 = s.a(Real(0)), b0 = s.b(Real(0)), l = s.l();
+  const auto text = [](Real x) { return std::to_string(double(x)); };
+  const char* advice =
+      ": the discretisation error exceeds the distance to the bound (docs/theory.md, \"Bounds of "
+      "the rolling contact\"); raise the terms, or use oversampling 2 with the mapped basis "
+      "(docs/line-solver.md, \"Oversampling\")";
+  if (!(a0 <= s.a_long_term * (1 + tolerance)))
+    warnings.push_back("a(0)/a0 = " + text(a0 / s.a_long_term) +
+                       " > 1 breaks the bound a(0) <= a0 of the long-term static contact" + advice);
+  if (!(l <= s.l_long_term * (1 + tolerance)))
+    warnings.push_back("l/l0 = " + text(l / s.l_long_term) +
+                       " > 1 breaks the bound l <= l0 of the long-term static contact" + advice);
+  if (!(b0 >= -tolerance * s.a_long_term))
+    warnings.push_back("b(0)/a0 = " + text(b0 / s.a_long_term) +
+                       " < 0 breaks the bound b(0) >= 0" + advice);
   return warnings;
 }
 

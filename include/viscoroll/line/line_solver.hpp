@@ -14,14 +14,18 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SVD>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <chrono>
 #include <cmath>
 #include <concepts>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
+#include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/strip.hpp>
@@ -131,21 +135,37 @@ class LineSolver {
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + memory.f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
-        problem(scene, slow, memory.f, scene.speed * memory.tau), options_.terms, options_.basis,
+        problem(Units{scene.c1, scene.c2, 0, 0}, slow, memory.f, scene.speed * memory.tau),
+        options_.terms, options_.basis,
         options_.oversampling);
   }
 
  private:
-  static LineProblem<Real> problem(const LineScene<Real>& scene,
-                                   const StaticLineContact<Real>& slow, Real f, Real vtau) {
-    return {
-        scene.c1, scene.c2, vtau, f, slow.a0, slow.l, scene.c1 * slow.a0 * slow.a0 * slow.l / 3};
+  /// The solver's units (docs/theory.md, "Scaling"): c1 and c2 in a unit of curvature
+  /// 2^curvature in which c1 lies in [1, 2), lengths in a unit 2^length near the long-term a0,
+  /// d in 2^(curvature + 2 length). Powers of two: every product and quotient rounds as in the
+  /// caller's units wherever those neither overflow nor underflow.
+  struct Units {
+    Real c1, c2;
+    int curvature, length;
+  };
+
+  static LineProblem<Real> problem(const Units& u, const StaticLineContact<Real>& slow, Real f,
+                                   Real vtau) {
+    return {u.c1, u.c2, vtau, f, slow.a0, slow.l, u.c1 * slow.a0 * slow.a0 * slow.l / 3};
+  }
+
+  /// The shape with a_ref and l in the caller's units (for the messages of the warnings).
+  static LineShape<Real> caller_shape(LineShape<Real> shape, const Units& u) {
+    shape.a_ref = times_power_of_two(shape.a_ref, u.length);
+    shape.l = times_power_of_two(shape.l, u.length);
+    return shape;
   }
 
   /// A solution of the scene with shape and penetration d: converged, a root, no iterations;
-  /// closed_form and make set what differs.
-  static Solution solution(const LineScene<Real>& scene, const StaticLineContact<Real>& slow,
-                           Real c, Real f, Real vtau, LineShape<Real> shape, Real d) {
+  /// closed_form and make set what differs. In the solver's units until solve() converts it.
+  static Solution solution(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
+                           Real vtau, LineShape<Real> shape, Real d) {
     return Solution{.shape = std::move(shape),
                     .d = d,
                     .a_long_term = slow.a0,
@@ -158,22 +178,22 @@ class LineSolver {
                     .iterations = 0,
                     .residual = Real(0),
                     .warnings = {},
-                    .c1 = scene.c1,
+                    .c1 = u.c1,
                     .vtau = vtau,
                     .f = f,
                     .compliance = c};
   }
 
-  Solution closed_form(const LineScene<Real>& scene, const StaticLineContact<Real>& s,
+  Solution closed_form(const Units& u, const StaticLineContact<Real>& s,
                        const StaticLineContact<Real>& slow, Real c, Real f,
                        const char* reason) const {
     using std::log;
     LineShape<Real> shape{slow.a0, s.l, {log(s.a0 / slow.a0)}, {Real(0)}};
     // A glassy contact is the static one of the instantaneous compliance: G = 0 makes F0 = C1 a^2/4
     // the load of that compliance; it is reported as the static strip (vtau = 0 in the pressure).
-    Solution sol = solution(scene, slow, c, f, Real(0), shape, s.d);
+    Solution sol = solution(u, slow, c, f, Real(0), shape, s.d);
     sol.reason = reason;
-    add_warnings(sol);
+    add_warnings(sol, u);
     return sol;
   }
 
@@ -194,19 +214,26 @@ class LineSolver {
   /// rolling() from `start` where it can seed the iteration, else from the cold start; a seeded
   /// iteration that stops short is run again from the cold start. The result's warnings say when
   /// a seed was set aside, so that a bad seed never decides the answer.
-  Solution rolling_from(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
-                        Real f, Real vtau, const Solution* start) const {
-    if (start == nullptr) return rolling(scene, slow, c, f, vtau, nullptr);
+  Solution rolling_from(const LineScene<Real>& scene, const Units& u,
+                        const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
+                        const Solution* given) const {
+    if (given == nullptr) return rolling(scene, u, slow, c, f, vtau, nullptr);
+    // The seed in the solver's units (a shape from a far scene may leave the range there).
+    Solution seed = *given;
+    seed.shape.a_ref = times_power_of_two(seed.shape.a_ref, -u.length);
+    seed.shape.l = times_power_of_two(seed.shape.l, -u.length);
+    seed.d = times_power_of_two(seed.d, -u.curvature - 2 * u.length);
+    const Solution* start = &seed;
     if (!usable_seed(*start)) {
-      Solution cold = rolling(scene, slow, c, f, vtau, nullptr);
+      Solution cold = rolling(scene, u, slow, c, f, vtau, nullptr);
       cold.warnings.push_back(
           "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
           "solved from the cold start");
       return cold;
     }
-    Solution seeded = rolling(scene, slow, c, f, vtau, start);
+    Solution seeded = rolling(scene, u, slow, c, f, vtau, start);
     if (seeded.converged) return seeded;
-    Solution cold = rolling(scene, slow, c, f, vtau, nullptr);
+    Solution cold = rolling(scene, u, slow, c, f, vtau, nullptr);
     cold.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
                             "): solved again from the cold start");
     return cold;
@@ -221,35 +248,70 @@ class LineSolver {
     };
     return s.converged && !s.shape.alpha.empty() && finite(s.shape.alpha) && finite(s.shape.beta) &&
            (boost::math::isfinite)(s.shape.l) && s.shape.l > 0 &&
-           (boost::math::isfinite)(s.shape.a_ref) && s.shape.a_ref > 0 &&
-           (boost::math::isfinite)(s.d);
+           (boost::math::isfinite)(s.shape.a_ref) &&
+           s.shape.a_ref >= (std::numeric_limits<Real>::min)() && (boost::math::isfinite)(s.d);
   }
 
-  Solution rolling(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
-                   Real f, Real vtau, const Solution* start) const {
+  /// a/a0 and b/a0 of the plane solution at V tau/a0 = v (Eq. P5), the seed of the cold start.
+  struct PlaneSeed {
+    Real a, b;
+  };
+  /// The plane solver with the line scene's material, curvature and speed, and the load whose
+  /// long-term half width is the line's a0 (in the caller's units, where they are representable);
+  /// else an equivalent scene of order-one numbers with the same f and V tau/a0 (the plane
+  /// solution depends on nothing else, docs/theory.md "Scaling").
+  PlaneSeed plane_seed(const LineScene<Real>& scene, const Units& u,
+                       const StaticLineContact<Real>& slow, Real c, Real f, Real vtau) const {
+    using std::abs;
+    using limits = std::numeric_limits<Real>;
+    // W = C1 a0^2 / (4 (1 + f) c), plane a0 = slow.a0, formed as its power-of-two scaled self.
+    const Binary<Real> cc = binary(c);
+    const Real w_plane = times_power_of_two(
+        u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m), u.curvature + 2 * u.length - cc.e);
+    const Real a0 = times_power_of_two(slow.a0, u.length);
+    if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() &&
+        (boost::math::isfinite)(a0) && a0 >= (limits::min)()) {
+      try {
+        const PlaneSolver<Real, Material> plane(material_);
+        const auto ps = plane.solve(PlaneScene<Real>{.c1 = scene.c1, .load = w_plane, .speed = scene.speed});
+        return {ps.a / a0, ps.b / a0};
+      } catch (const std::invalid_argument&) {
+        // a number of the plane solution not representable: the scene of order-one numbers
+      }
+    }
+    const Real pi = boost::math::constants::pi<Real>();
+    // c = (1 - 0)/(2 pi mu_D) = 1, tau = 1, C1 = 1, 4 c (1 + f) W / C1 = 1: a0 = 1, V tau = v.
+    const PlaneSolver<Real, StandardLinearSolid<Real>> plane(
+        StandardLinearSolid<Real>(1 / (2 * pi), Real(0), f, Real(1)));
+    const auto ps = plane.solve(
+        PlaneScene<Real>{.c1 = Real(1), .load = 1 / (4 * (1 + f)), .speed = vtau / slow.a0});
+    return {ps.a / ps.a_long_term, ps.b / ps.a_long_term};
+  }
+
+  Solution rolling(const LineScene<Real>& scene, const Units& u,
+                   const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
+                   const Solution* start) const {
     using std::log;
     using std::pow;
-    const LineProblem<Real> prob = problem(scene, slow, f, vtau);
+    const LineProblem<Real> prob = problem(u, slow, f, vtau);
     LineShape<Real> shape;
     Real d;
-    std::vector<int> stages;
+    // Continuation in N from two terms up: each stage starts from the previous solution, which
+    // keeps the iteration on the branch of smooth solutions (a start far from it at large N can
+    // land on another root of the discrete equations, docs/line-solver.md). The first stage
+    // starts from the seed re-expanded to its terms, so that a seed decides no more than where
+    // the two-term iteration begins: the answer is the cold start's to the iteration's tolerance.
+    const std::vector<int> stages = continuation_stages(options_.terms);
     if (start != nullptr && start->shape.alpha.size() > 0) {
-      // A solution of a nearby scene: straight to the requested discretisation.
+      // A solution of a nearby scene.
       shape = start->shape;
       d = start->d;
-      stages = {options_.terms};
     } else {
-      // Seed: the static contact shrunk and shifted as the plane solution at the same V tau/a0,
-      // then continuation in N from two terms up: each stage starts from the previous solution,
-      // which keeps the iteration on the branch of smooth solutions (a cold start at large N can
-      // land on another root of the discrete equations, docs/line-solver.md).
-      const PlaneSolver<Real, Material> plane(material_);
-      const Real w_plane = scene.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * c);  // plane a0 = slow.a0
-      const auto ps = plane.solve(PlaneScene<Real>{scene.c1, w_plane, scene.speed});
-      const Real ratio = pow(ps.a / slow.a0, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
-      shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b / slow.a0}};
+      // The static contact shrunk and shifted as the plane solution at the same V tau/a0.
+      const PlaneSeed ps = plane_seed(scene, u, slow, c, f, vtau);
+      const Real ratio = pow(ps.a, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
+      shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b}};
       d = slow.d * ratio * ratio;
-      stages = continuation_stages(options_.terms);
     }
     // The paper's least-squares solution where the equations have no root (the last stage, with
     // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
@@ -267,51 +329,111 @@ class LineSolver {
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
-        if (k == 0) x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
+        // The cold start's plane seed outside the domain: the static contact (a seed given by
+        // the caller is not replaced here: rolling_from runs the cold start and says so).
+        if (k == 0 && start == nullptr)
+          x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
         if (!res(x, r))
-          return failure(scene, slow, c, f, vtau, res, x, "initial guess outside the domain",
+          return failure(u, slow, c, f, vtau, res, x, "initial guess outside the domain",
                          iterations);
       }
       numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
       iterations += out.iterations;
       const bool last = k + 1 == stages.size();
-      if (last && out.minimum && least_squares) {
-        out = numerics::least_squares_minimum(res, x, r, settings);
+      if (last && least_squares && !out.converged && !out.undefined) {
+        // Stopped short of a root (at a minimum with no root near, without a descent step or at
+        // the iteration limit): the least-squares minimum, whose Newton iteration converges
+        // linearly where the minimum is flat (10 times the iterations).
+        numerics::LeastSquaresOptions<Real> minimisation = settings;
+        minimisation.max_iterations = 10 * settings.max_iterations;
+        out = numerics::least_squares_minimum(res, x, r, minimisation);
         iterations += out.iterations;
-        if (out.converged)
-          out.reason = "least-squares minimum (no root of the line equations here)";
-        if (out.root_near) {
+        // A residual below the root tolerance on the way: Levenberg-Marquardt certifies the root,
+        // or stops at a minimum again, which the minimisation then certifies (at most 4 turns).
+        for (int turn = 0; turn < 4 && out.root_near; ++turn) {
           out = numerics::levenberg_marquardt(res, x, r, settings);
           iterations += out.iterations;
+          if (out.converged || out.undefined || !out.minimum) break;
+          out = numerics::least_squares_minimum(res, x, r, minimisation);
+          iterations += out.iterations;
+        }
+        if (out.converged && !out.root_near && r.cwiseAbs().maxCoeff() > root_tolerance())
+          out.reason = "least-squares minimum (no root of the line equations here)";
+        // Below the root tolerance with no step that lowers |r| (the residual's rounding floor):
+        // a root to the accuracy with which the equations are evaluated.
+        if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= root_tolerance()) {
+          out.converged = true;
+          out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
         }
       }
       if (out.undefined)
-        return failure(scene, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
+        return failure(u, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
-      if (last)
-        return make(scene, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
+      if (last) {
+        // The a posteriori error estimate of a root, the Newton correction max |J^+ r|. In a
+        // scalar narrower than double a root is reported converged only where it is at most
+        // sqrt(eps) (in float at V tau = 0.01 a0, N = 6, the residual's rounding floor 2e-5 over
+        // the smallest singular value 2e-3 of J moved b(0) by 15%; docs/stability.md). In double
+        // and wider it exceeds sqrt(eps) only at folds of the discrete equations (a residual
+        // 2e-8 ... 9e-7 over a vanishing singular value), where the root is reported with a
+        // warning naming the estimate (docs/line-solver.md, "Stops short of a root").
+        Real estimate = 0;
+        using std::sqrt;
+        const Real sqrt_eps = sqrt(std::numeric_limits<Real>::epsilon());
+        if (out.converged && least_squares && r.cwiseAbs().maxCoeff() <= root_tolerance())
+          estimate = newton_correction(res, x);
+        const bool narrow = std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits;
+        if (narrow && !(estimate <= sqrt_eps)) {
+          out.converged = false;
+          out.reason = "error estimate max |J^+ r| = " + std::to_string(double(estimate)) +
+                       " of the unknowns exceeds sqrt(eps) = " + std::to_string(double(sqrt_eps)) +
+                       ": the residual's rounding floor is beyond what this scalar carries here "
+                       "(use double)";
+        }
+        Solution sol = make(u, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
+        if (!narrow && !(estimate <= sqrt_eps))
+          sol.warnings.push_back(
+              "a root where the Jacobian is nearly singular (a fold of the discrete "
+              "equations): its error estimate max |J^+ r| = " +
+              std::to_string(double(estimate)) +
+              " exceeds sqrt(eps), so the root is not determined to better than the "
+              "discretisation and another root may lie near (docs/line-solver.md, \"Stops short "
+              "of a root\")");
+        return sol;
+      }
     }
-    return failure(scene, slow, c, f, vtau,
+    return failure(u, slow, c, f, vtau,
                    LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
                                                   options_.oversampling),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 
-  Solution make(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c, Real f,
+  /// max |J^+ r| at x (the minimum-norm least-squares Newton correction, by the singular value
+  /// decomposition of the semi-analytic Jacobian): the error estimate of a root. Infinite where
+  /// the Jacobian is undefined.
+  static Real newton_correction(const LineResidual<Real, Quadrature>& res, const Vector& x) {
+    Vector r;
+    Matrix jac;
+    if (!res.jacobian(x, r, jac)) return std::numeric_limits<Real>::infinity();
+    const Eigen::JacobiSVD<Matrix> svd(jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    return svd.solve(r).cwiseAbs().maxCoeff();
+  }
+
+  Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
                 Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                 const Vector& r, bool converged, std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
-    Solution sol = solution(scene, slow, c, f, vtau, res.shape(x), res.penetration(x));
+    Solution sol = solution(u, slow, c, f, vtau, res.shape(x), res.penetration(x));
     sol.converged = converged;
     sol.root = root;
     sol.reason = std::move(reason);
     sol.iterations = iterations;
     sol.residual = rmax;
     sol.chi = rolling_friction(sol);
-    add_warnings(sol);
+    add_warnings(sol, u);
     if (converged && !root)
       sol.warnings.push_back(
           "the line equations have no root here: a least-squares minimum with max |r| = " +
@@ -321,11 +443,11 @@ class LineSolver {
     return sol;
   }
 
-  Solution failure(const LineScene<Real>& scene, const StaticLineContact<Real>& slow, Real c,
+  Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c,
                    Real f, Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
                    const char* reason, int iterations) const {
     Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
-    return make(scene, slow, c, f, vtau, res, x, r, false, reason, iterations);
+    return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
   }
 
   /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q) = (C1/4) strip_first_moment
@@ -350,8 +472,14 @@ class LineSolver {
     return sol.c1 * num / den;
   }
 
-  static void add_warnings(Solution& sol) {
-    for (auto& w : line_domain_warnings(sol.shape)) sol.warnings.push_back(std::move(w));
+  /// The domain of the line theory (line_domain_warnings) and the bounds of the rolling contact
+  /// (line_bound_warnings, to the root tolerance, plus the residual of a least-squares minimum,
+  /// which meets the equations only to it).
+  static void add_warnings(Solution& sol, const Units& u) {
+    for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
+      sol.warnings.push_back(std::move(w));
+    const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
+    for (auto& w : line_bound_warnings(sol, tolerance)) sol.warnings.push_back(std::move(w));
   }
 
   Material material_;
@@ -368,21 +496,68 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
   const Real c = material_.instantaneous_compliance();
   const PronyTerm<Real> memory = detail::single_memory_term(material_);
   const Real f = memory.f;
-  const Real vtau = scene.speed * memory.tau;
-  const auto slow = static_line_contact(scene.c1, scene.c2, (1 + f) * c * scene.load);
+  const auto inputs = [&] {
+    return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
+           ", load = " + detail::format_value(scene.load) +
+           ", speed = " + detail::format_value(scene.speed) +
+           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+           ", tau = " + detail::format_value(memory.tau);
+  };
+  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+  // Scaling (docs/theory.md, "Scaling"): C1, C2 in the unit of curvature of C1's power of two,
+  // lengths in a power of two near a0; every product below rounds as in the caller's units.
+  const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
+  const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + f);
+  detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
+  const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
+  // Long-term static contact, compliance (1 + f) c, Eq. (47) with (52).
+  const auto slow_units = static_line_contact_in_units<Real>(
+      k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
+  const Units u{k1.m, c2, k1.e, slow_units.length};
+  const StaticLineContact<Real> slow = slow_units.contact;
+  const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+  const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
   const Real eps = std::numeric_limits<Real>::epsilon();
-  if constexpr (Material::is_viscoelastic) {
-    if (f > 0 && vtau > 0) {
-      if (strip_is_glassy(vtau, f, slow.a0)) {
-        // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
-        const auto fast = static_line_contact(scene.c1, scene.c2, c * scene.load);
-        // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
-        return closed_form(scene, fast, slow, c, Real(0), "glassy limit (closed form)");
+  Solution sol = [&] {
+    if constexpr (Material::is_viscoelastic) {
+      if (f > 0 && vtau > 0) {
+        if (strip_is_glassy(vtau, f, slow.a0)) {
+          // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
+          const auto fast = static_line_contact_in_units<Real>(
+              k1.m, c2, {cc.m * load.m, cc.e + load.e}, k1.e);
+          const int shift = fast.length - u.length;  // to the units of the long-term contact
+          const StaticLineContact<Real> glassy{times_power_of_two(fast.contact.a0, shift),
+                                               times_power_of_two(fast.contact.l, shift),
+                                               times_power_of_two(fast.contact.d, 2 * shift)};
+          // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
+          return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
+        }
+        if (vtau > eps * slow.a0) return rolling_from(scene, u, slow, c, f, vtau, start);
       }
-      if (vtau > eps * slow.a0) return rolling_from(scene, slow, c, f, vtau, start);
     }
-  }
-  return closed_form(scene, slow, slow, c, f, "static (closed form)");
+    return closed_form(u, slow, slow, c, f, "static (closed form)");
+  }();
+  // The solution in the caller's units: a converged one's numbers each normal and finite (b and
+  // chi may be zero), else an error naming the inputs (docs/errors.md); a non-converged one
+  // scaled back as it is.
+  const int length = u.length, curvature = u.curvature;
+  const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
+    if (!sol.converged) return times_power_of_two(x, exponent);
+    return detail::representable(x, exponent, what, inputs, zero_allowed);
+  };
+  const Real a_origin = sol.shape.a(Real(0)), b_origin = sol.shape.b(Real(0));
+  in(a_origin, length, "the half width a(0)", false);
+  in(b_origin, length, "the offset b(0)", true);
+  sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
+  sol.shape.l = in(sol.shape.l, length, "the half length l", false);
+  sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
+  sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
+  sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
+  sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
+  sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
+  sol.vtau = in(sol.vtau, length, "V tau", true);
+  sol.c1 = scene.c1;
+  return sol;
 }
 
 /// The scalar deduced from the material: LineSolver solver(StandardLinearSolid<double>(...)).

@@ -9,12 +9,19 @@
 // rho > e^(3/2)/4, where the left side decreases from its maximum 8 e^-3 = 0.398; then
 // a0^3 rho = 3 compliance load / C1. Used for the static scene, the elastic material and both
 // speed limits (with the long-term and the instantaneous compliance), with no Bessel work.
+//
+// Scaling (docs/theory.md, "Scaling"): rho depends on C2/C1 alone, and a0 is formed in a unit of
+// length 2^k near it (static_line_contact_in_units), so that 3 compliance load / C1 may lie beyond
+// the range of Real where a0, l and d do not; static_line_contact checks that they are normal
+// finite numbers in the caller's units and names the inputs where one is not.
 #pragma once
 
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 
@@ -36,20 +43,21 @@ Real max_line_contact_curvature_ratio() {
   return 8 * exp(Real(-3));
 }
 
-/// Kalker's static line contact for curvatures c1 > 0, 0 < c2 < 8 e^-3 c1, and
-/// compliance_load = (1 - nu)/(2 pi mu) * P > 0 (mu the modulus that acts: long-term for a slow
-/// scene, instantaneous for a fast one). Throws std::invalid_argument naming the parameter.
+/// The static line contact in units of powers of two: a0 and l in 2^length, d in
+/// 2^(curvature + 2 length), for c1 and c2 given in a unit of curvature 2^curvature.
 template <RealScalar Real>
-StaticLineContact<Real> static_line_contact(Real c1, Real c2, Real compliance_load) {
-  using std::cbrt;
+struct StaticLineContactInUnits {
+  StaticLineContact<Real> contact;  ///< a0, l, d in the units
+  int length;                       ///< binary exponent of the unit of length
+};
+
+namespace detail {
+
+/// rho = l/a0, the root of (ln 4 rho - 1)/rho^2 = ratio on rho > e^(3/2)/4 (Eq. 48 with (34)).
+template <RealScalar Real>
+Real static_line_aspect(Real ratio) {
   using std::exp;
   using std::log;
-  detail::require_positive("c1", c1);
-  detail::require_positive("c2", c2);
-  detail::require_positive("compliance * load", compliance_load);
-  const Real ratio = c2 / c1;
-  detail::require(ratio < max_line_contact_curvature_ratio<Real>(), "c2/c1", ratio,
-                  "0 < c2/c1 < 8 e^-3 = 0.398 (a contact longer in y than in x)");
   // rho = l/a0 on the decreasing branch: h(rho) = (ln 4 rho - 1) - ratio rho^2, h(rho_min) > 0.
   const Real rho_min = exp(Real(1.5)) / 4;
   const auto h = [ratio](Real rho) { return (log(4 * rho) - 1) - ratio * rho * rho; };
@@ -59,10 +67,70 @@ StaticLineContact<Real> static_line_contact(Real c1, Real c2, Real compliance_lo
   const auto bracket = boost::math::tools::toms748_solve(
       h, rho_min, hi, boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 1),
       iterations);
-  const Real rho = (bracket.first + bracket.second) / 2;
-  const Real a0 = cbrt(3 * compliance_load / (c1 * rho));  // load (47): C1 a0^2 l / 3
-  const Real l = rho * a0;
-  return {a0, l, c1 * a0 * a0 * log(4 * rho) / 2};
+  return (bracket.first + bracket.second) / 2;
+}
+
+}  // namespace detail
+
+/// Kalker's static line contact for curvatures c1 > 0, 0 < c2 < 8 e^-3 c1 (normal numbers, in a
+/// unit of curvature 2^curvature) and compliance_load = (1 - nu)/(2 pi mu) * P = m 2^e in the
+/// units of curvature times length cubed (Eq. 47: C1 a0^2 l / 3 = compliance load), unit of
+/// length 1. The unit of length of the result is 2^k with a0 2^-k of order one: a0^3 rho =
+/// 3 compliance load / C1 is formed as m 2^e, its cube root in the caller's units where m 2^e is a
+/// normal number (so that the bits are those of static_line_contact) and with the exponent made
+/// a multiple of 3 where it is not. Throws std::invalid_argument naming the parameter.
+template <RealScalar Real>
+StaticLineContactInUnits<Real> static_line_contact_in_units(Real c1, Real c2,
+                                                            Binary<Real> compliance_load,
+                                                            int curvature = 0) {
+  using std::cbrt;
+  using std::log;
+  detail::require_positive("c1", c1);
+  detail::require_positive("compliance * load", compliance_load.m);
+  const Real ratio = c2 / c1;
+  detail::require(ratio >= (std::numeric_limits<Real>::min)() &&
+                      ratio < max_line_contact_curvature_ratio<Real>(),
+                  "c2/c1", ratio,
+                  "0 < c2/c1 < 8 e^-3 = 0.398 (a contact longer in y than in x), c2/c1 a normal "
+                  "number");
+  const Real rho = detail::static_line_aspect(ratio);
+  // Load (47): C1 a0^2 l / 3 = compliance load, l = rho a0.
+  const Real x = 3 * compliance_load.m / (c1 * rho);
+  const int e = compliance_load.e - curvature;
+  const Real caller = times_power_of_two(x, e);
+  Binary<Real> a0;
+  using std::abs;
+  if ((boost::math::isfinite)(caller) && abs(caller) >= (std::numeric_limits<Real>::min)()) {
+    a0 = binary(cbrt(caller));
+  } else {
+    const int third = (e >= 0 ? e : e - 2) / 3;  // floor(e / 3)
+    a0 = binary(cbrt(times_power_of_two(x, e - 3 * third)));
+    a0.e += third;
+  }
+  const Real a = a0.m;
+  return {{a, rho * a, c1 * a * a * log(4 * rho) / 2}, a0.e};
+}
+
+/// Kalker's static line contact for curvatures c1 > 0, 0 < c2 < 8 e^-3 c1, and
+/// compliance_load = (1 - nu)/(2 pi mu) * P > 0 (mu the modulus that acts: long-term for a slow
+/// scene, instantaneous for a fast one). Throws std::invalid_argument naming the parameter, or
+/// the inputs where a0, l or d is not a normal finite number (docs/errors.md).
+template <RealScalar Real>
+StaticLineContact<Real> static_line_contact(Real c1, Real c2, Real compliance_load) {
+  detail::require_positive("c1", c1);
+  detail::require_positive("c2", c2);
+  detail::require_positive("compliance * load", compliance_load);
+  const Binary<Real> k1 = binary(c1);
+  const auto s = static_line_contact_in_units(k1.m, times_power_of_two(c2, -k1.e),
+                                              binary(compliance_load), k1.e);
+  const auto inputs = [&] {
+    return "c1 = " + detail::format_value(c1) + ", c2 = " + detail::format_value(c2) +
+           ", compliance * load = " + detail::format_value(compliance_load);
+  };
+  return {detail::representable(s.contact.a0, s.length, "the static half width a0", inputs, false),
+          detail::representable(s.contact.l, s.length, "the static half length l", inputs, false),
+          detail::representable(s.contact.d, k1.e + 2 * s.length, "the static penetration d",
+                                inputs, false)};
 }
 
 }  // namespace viscoroll
