@@ -36,7 +36,7 @@ viscoroll::testing::HunterReference<double> collocation(const PronyCreep<double>
 
 /// Checks a, b, chi, the peak and the pressure at four points against the collocation, to 1e-8
 /// (the bound; both methods are converged to ~1e-11 at the N used, measured 2e-14 for
-/// two terms, 1e-10 for twenty).
+/// two terms, 1.2e-14 for twenty).
 void check_against_collocation(const PronyCreep<double>& m, double speed, int n) {
   const double c1 = 1.0, load = 0.1;
   const auto s = PlaneSolver(m).solve(PlaneScene<double>{.c1 = c1, .load = load, .speed = speed});
