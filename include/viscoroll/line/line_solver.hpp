@@ -393,6 +393,17 @@ class LineSolver {
                        "(use double)";
         }
         Solution sol = make(u, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
+        // A root of the discrete equations that is not a contact (d, a(0) or l not positive;
+        // found at folds, e.g. by the property test of errors.md) is reported, not returned as
+        // converged.
+        if (sol.converged && !(sol.d > 0 && sol.a(Real(0)) > 0 && sol.l() > 0)) {
+          sol.converged = false;
+          sol.reason = "a root of the line equations that is not a contact (d = " +
+                       detail::format_value(sol.d) + ", a(0) = " +
+                       detail::format_value(sol.a(Real(0))) + ", l = " +
+                       detail::format_value(sol.l()) +
+                       " in the solver's units of length; each must be positive)";
+        }
         if (!narrow && !(estimate <= sqrt_eps))
           sol.warnings.push_back(
               "a root where the Jacobian is nearly singular (a fold of the discrete "
