@@ -43,6 +43,9 @@ template <RealScalar Real>
 struct SpectrumStrip {
   std::vector<Real> u, w, weight;
   Real b{}, g0{};
+  /// Pi_g'(0) + e_2, e_2 = sum_{j<k} lambda_j lambda_k (a length squared): the constant that the
+  /// memory adds to the line equation (34) of a spectrum, docs/theory.md (S13).
+  Real pig1{};
   Real centroid{};  ///< int (x - b) p dx / int p dx, the pressure's centroid ahead of the centre (S10)
   Real residual{};  ///< max |X r - rhs| / (|X| |r| + |rhs|) of the linear solve (S5)
   /// Amplification of rounding in the pressure (S9), sum_i |A_i| (1 for one term).
@@ -105,9 +108,15 @@ void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
 }  // namespace detail
 
 /// Solves (S5)-(S7) at half width a > 0. Every length of `lengths` and a in one unit; the
-/// unknowns are formed in units of a and returned in the caller's.
+/// unknowns are formed in units of a and returned in the caller's. With `right` (M values, the
+/// line solver's), the leading-edge condition of retardation length lambda_k is the line form
+/// (S12) of docs/theory.md, A_k = Psi_k right[k] with A_k = C1 e^z_k [a (b + lambda_k -
+/// Pi_g(1/lambda_k)) K1(z_k) - Pi_h(1/lambda_k) K0(z_k)], z_k = a/lambda_k,
+/// Psi_k = prod_i (1 - mu_i/lambda_k), instead of the plane's A_k = 0; c1 is C1 in the same units
+/// (used only with `right`).
 template <RealScalar Real>
-SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths) {
+SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
+                                   const std::vector<Real>* right = nullptr, Real c1 = Real(1)) {
   using std::abs;
   const auto& mu = lengths.relaxation;
   const auto& lambda = lengths.retardation;
@@ -159,6 +168,12 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths)
       at(m + k, m + i) = s * c * row;
     }
     at(m + k, 2 * m) = -s * inv_psi * row;
+    // (S12): the row (without its 1/(1 + s_k)) is -A_k / (C1 a^2 e^z K0(z) Psi_k), and
+    // A_k = Psi_k right[k].
+    if (right != nullptr)
+      rhs[m + k] = -(*right)[k] /
+                   (c1 * a * a * (special::bessel_k0_scaled(1 / lam) +
+                                  special::bessel_k1_scaled(1 / lam)));
   }
   // Pi_g(0) = sum_i A_i w_i = Lambda_1 (S4), with sum_i A_i = 1 and sum_i omega_i = N(0) = 0:
   // sum_i W_i = 0.
@@ -172,7 +187,7 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths)
   out.u.resize(m);
   out.w.resize(m);
   out.weight = weight;
-  Real g0 = 0, moment = 0;
+  Real g0 = 0, moment = 0, pig1 = 0;
   const Real b = x[2 * m];
   for (std::size_t i = 0; i < m; ++i) {
     // The term's (32): even = A_i, odd = A_i (w_i - b) = A_i mu_i (1 - P_i) - A_i b + W_i, g = U_i
@@ -181,10 +196,12 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths)
     out.u[i] = x[i] * a * a;
     out.w[i] = odd * a;
     g0 += x[i];  // G0 = Pi_h(0) = sum_i A_i u_i (S8)
+    pig1 += mu[i] * x[m + i];  // (S13): Pi_g'(0) + e_2 = a sum_i mu_i W_i (W_i in units of a)
     moment += detail::spectrum_term_moment(weight[i], odd, x[i], a / mu[i], mu[i] / a);
   }
   out.b = b * a;
   out.g0 = g0 * a * a;
+  out.pig1 = pig1 * a;
   // (S10): int (x - b) p dx / int p dx = sum_i M_i / (pi (1/2 + G0/a^2)), in units of a.
   out.centroid = (moment / (Real(1) / 2 + g0)) * a;
   // Relative residual of the solve, in the (row-scaled) system.

@@ -1,0 +1,238 @@
+// viscoroll: the line-contact theory of Panek & Kalker (1980) for a material with a discrete
+// spectrum of M >= 2 retardation times (docs/theory.md section 14, (S11)-(S15)).
+//
+// Each strip y is the closed-form strip of a spectrum (core/spectrum_strip.hpp, (S2)-(S10)) with
+// M leading-edge conditions, one per retardation length lambda_k = V tau_k, whose right sides are
+// the line form (L6) at lambda_k of Q_k = F0 - F1/lambda_k (S12); the interior equation (34)
+// gains the spectrum's constant (S13). The strip's unknowns (U_i, W_i, b) are eliminated at each
+// collocation point by its linear system, so the global unknowns do not grow with M: ln a(y) and
+// b(y) as in line_shape.hpp, and two more even functions of y, gamma = G0/a^2 and the strip
+// centroid kappa (the first moment), which carry F0 = C1 a^2 (1/4 + gamma/2) and
+// F1 = F0 (b + kappa + sum mu_i) to the line integrals (S14). The equations at each collocation
+// point: (34) with the spectrum's constant, and the strip's b, G0/a^2 and centroid equal to the
+// expanded ones; and the load (47).
+#pragma once
+
+#include <Eigen/Core>
+#include <boost/math/special_functions/fpclassify.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+#include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/spectrum_strip.hpp>
+#include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/line_node_rule.hpp>
+#include <viscoroll/line/line_operators.hpp>
+#include <viscoroll/line/line_shape.hpp>
+
+namespace viscoroll {
+
+/// The scene's constants seen by LineSpectrumResidual, lengths in one unit: the spectrum at the
+/// scene's speed (its lengths lambda_k = V tau_k, mu_i = V rho_i and creep ratio F), the scales of
+/// a and l (the long-term static contact of compliance c (1 + F)) and the load target
+/// int F0 dy = (1 + F) c P, Eq. (47) with (52).
+template <RealScalar Real>
+struct LineSpectrumProblem {
+  Real c1, c2;
+  SpectrumLengths<Real> lengths;
+  Real a_ref, l_ref, load_target;
+};
+
+/// The even functions gamma(y) = G0/a^2 and kappa(y)/a_ref of the spectrum's line solution,
+/// Chebyshev series in u = 2 t^2 - 1, t = y/l (docs/theory.md (S14)).
+template <RealScalar Real>
+struct LineSpectrumMoments {
+  std::vector<Real> gamma, kappa;
+  Real gamma_at(Real u) const { return LineShape<Real>::chebyshev(gamma, u); }
+  Real kappa_at(Real u) const { return LineShape<Real>::chebyshev(kappa, u); }
+};
+
+/// Residual of the spectrum's line equations at N + 1 collocation points (Chebyshev points in u).
+/// Unknowns (4N + 5): alpha_0..alpha_{N-1} (ln a), beta_0..beta_N (b / a_ref), gamma_0..gamma_N,
+/// kappa_0..kappa_N, ln(l / l_ref), d / (C1 a_ref^2). Equations (4N + 5): at each point (34) with
+/// (S13), b, G0/a^2 and the centroid of the strip (S12) minus the expanded ones, then the load.
+/// A least-squares problem for numerics::levenberg_marquardt (forward-difference Jacobian).
+template <RealScalar Real, class Quadrature>
+requires NodalQuadratureRule<Quadrature, Real>
+class LineSpectrumResidual {
+ public:
+  using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+
+  /// basis: the expansion variable of every series (LineBasis::s_mapped with scale
+  /// mu_1/a_ref resolves the end layers where a(y) falls to the relaxation lengths).
+  LineSpectrumResidual(LineSpectrumProblem<Real> problem, int terms,
+                       LineBasis basis = LineBasis::t_squared)
+      : p_(std::move(problem)), n_(terms), basis_(basis) {
+    detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
+    using std::cos;
+    using std::sqrt;
+    const auto& lam = p_.lengths.retardation;
+    const auto& mu = p_.lengths.relaxation;
+    detail::require(lam.size() >= 1 && mu.size() == lam.size(), "retardation terms", lam.size(),
+                    ">= 1, as many relaxation lengths");
+    for (const Real m : mu) mu_sum_ += m;
+    for (const Real l : lam) lambda_sum_ += l;
+    // One node rule per retardation length: its t-panels on the scale x0/lambda_k, its end panels
+    // on the nearest pole of G0, where I0(a/mu_1) = 0 (f of the rule such that (1 + f)/V =
+    // 1/mu_1).
+    scale_ = basis == LineBasis::s_mapped ? Real(mu[0] / p_.a_ref) : Real(0);
+    for (const Real l : lam) rules_.emplace_back(basis_, scale_, terms, l, l / mu[0] - 1);
+    const Real pi = boost::math::constants::pi<Real>();
+    const int m = points();
+    for (int i = 1; i <= m; ++i) {
+      const Real v = cos(pi * Real(2 * i - 1) / Real(2 * m));
+      t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, scale_, v)));
+    }
+  }
+
+  int terms() const { return n_; }
+  int points() const { return n_ + 1; }
+  int unknowns() const { return 4 * n_ + 5; }
+  int equations() const { return 4 * points() + 1; }
+  const LineSpectrumProblem<Real>& problem() const { return p_; }
+
+  LineShape<Real> shape(const Vector& x) const {
+    using std::exp;
+    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[4 * n_ + 3]), {}, {}, basis_, scale_};
+    for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
+    for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
+    return s;
+  }
+  LineSpectrumMoments<Real> moments(const Vector& x) const {
+    LineSpectrumMoments<Real> m;
+    for (int k = 0; k <= n_; ++k) {
+      m.gamma.push_back(x[2 * n_ + 1 + k]);
+      m.kappa.push_back(x[3 * n_ + 2 + k]);
+    }
+    return m;
+  }
+  Real penetration(const Vector& x) const { return x[4 * n_ + 4] * p_.c1 * p_.a_ref * p_.a_ref; }
+
+  /// The unknowns of a shape, moments and penetration (series padded with zeros or truncated).
+  Vector pack(const LineShape<Real>& given, const LineSpectrumMoments<Real>& mo, Real d) const {
+    using std::log;
+    const bool same = given.basis == basis_ && given.scale == scale_;
+    const LineShape<Real> s = same ? given : given.reexpanded(basis_, n_, scale_);
+    Vector x = Vector::Zero(unknowns());
+    for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
+    for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
+    for (int k = 0; k <= n_ && k < int(mo.gamma.size()); ++k) x[2 * n_ + 1 + k] = mo.gamma[k];
+    for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k) x[3 * n_ + 2 + k] = mo.kappa[k];
+    x[4 * n_ + 3] = log(s.l / p_.l_ref);
+    x[4 * n_ + 4] = d / (p_.c1 * p_.a_ref * p_.a_ref);
+    return x;
+  }
+
+  /// The line functions at y from the expansions: a, b, F0 = C1 a^2 (1/4 + gamma/2) (33), the
+  /// centroid kappa of the strip (from b) and Q_k = F0 (1 - (b + kappa + sum mu)/lambda_k) (S14).
+  struct Functions {
+    Real a, b, gamma, kappa, f0;
+  };
+  Functions functions(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo,
+                      Real y) const {
+    const Real a = s.a(y);
+    if (!(a > 0)) return {Real(0), s.b(y), Real(0), Real(0), Real(0)};
+    const Real u = LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(y));
+    const Real gamma = mo.gamma_at(u);
+    return {a, s.b(y), gamma, mo.kappa_at(u) * p_.a_ref, p_.c1 * a * a * (Real(1) / 4 + gamma / 2)};
+  }
+  Real q(const Functions& f, std::size_t k) const {
+    return f.f0 * (1 - (f.b + f.kappa) / p_.lengths.retardation[k]);
+  }
+
+  /// The strip at y (|y| < l) with the right sides of its leading-edge conditions (S12) from the
+  /// line integrals of the expansions; false where undefined (a <= 0 or x0 = a + b <= 0).
+  bool strip_at(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y,
+                Functions& here, SpectrumStrip<Real>& strip, Real* lhs34 = nullptr) const {
+    here = functions(s, mo, y);
+    const Real x0 = here.a + here.b;
+    if (!(here.a > 0) || !(x0 > 0)) return false;
+    const std::size_t m = rules_.size();
+    std::vector<Real> right(m);
+    for (std::size_t k = 0; k < m; ++k) {
+      LineNodes<Real> nd;
+      rules_[k].point(s, y, x0, nd);
+      const std::size_t count = nd.yp.size();
+      std::vector<Real> dq(count), df0(k == 0 && lhs34 ? count : 0);
+      const Real qk = q(here, k);
+      for (std::size_t j = 0; j < count; ++j) {
+        const Functions there = functions(s, mo, nd.yp[j]);
+        dq[j] = q(there, k) - qk;
+        if (!df0.empty()) df0[j] = there.f0 - here.f0;
+      }
+      // (S12): the right side is (L6) at lambda_k of Q_k.
+      right[k] = exterior_right(nd, dq, qk, x0, p_.lengths.retardation[k]);
+      if (!df0.empty()) *lhs34 = near_field_strip(nd, df0, here.f0, here.a);
+    }
+    strip = spectrum_strip(here.a, p_.lengths, &right, p_.c1);
+    return true;
+  }
+
+  /// r(x), scaled: (34) by C1 a_ref^2, b and the centroid by a_ref, the load by its target.
+  bool operator()(const Vector& x, Vector& r) const {
+    r.resize(equations());
+    const LineShape<Real> s = shape(x);
+    const LineSpectrumMoments<Real> mo = moments(x);
+    const Real d = penetration(x), c1 = p_.c1, ar = p_.a_ref;
+    const int m = points();
+    for (int i = 0; i < m; ++i) {
+      const Real y = t_[i] * s.l;
+      Functions here;
+      SpectrumStrip<Real> st;
+      Real lhs34 = 0;
+      if (!strip_at(s, mo, y, here, st, &lhs34)) return false;
+      const Real a = here.a, b = st.b;
+      // (34) with (S13): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2] = -C1 a^2/4 - C1 (Pi_g'(0) + e2)
+      //   - C1 b (b - 2 Lambda_1)/2 - C2 y^2/2 + d, with the strip's b.
+      const Real rhs34 =
+          -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 - p_.c2 * y * y / 2 + d;
+      r[i] = (lhs34 - rhs34) / (c1 * ar * ar);
+      r[m + i] = (st.b - here.b) / ar;
+      r[2 * m + i] = st.g0 / (a * a) - here.gamma;
+      r[3 * m + i] = (st.centroid - here.kappa) / ar;
+    }
+    r[4 * m] = load(s, mo) / p_.load_target - 1;
+    for (int i = 0; i < r.size(); ++i)
+      if (!(boost::math::isfinite)(r[i])) return false;
+    return true;
+  }
+
+  /// No semi-analytic Jacobian: Levenberg-Marquardt forms it by forward differences.
+  bool jacobian(const Vector&, Vector&, Matrix&) const { return false; }
+
+  /// int_{-l}^{l} F0 dy (Eq. 47).
+  Real load(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
+    std::vector<Real> nodes, weights;
+    rules_[0].load(s, nodes, weights);
+    Real sum = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j) sum += weights[j] * functions(s, mo, nodes[j]).f0;
+    return 2 * sum;
+  }
+
+  /// int_{-l}^{l} F0 (b + kappa) dy / int F0 dy: the pressure's centroid from the axis, chi / C1
+  /// (Eq. 51 strip by strip, (S10), (S15)).
+  Real centroid(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
+    std::vector<Real> nodes, weights;
+    rules_[0].load(s, nodes, weights);
+    Real num = 0, den = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      const Functions f = functions(s, mo, nodes[j]);
+      num += weights[j] * f.f0 * (f.b + f.kappa);
+      den += weights[j] * f.f0;
+    }
+    return num / den;
+  }
+
+ private:
+  LineSpectrumProblem<Real> p_;
+  int n_;
+  LineBasis basis_;
+  Real scale_ = 0;
+  Real mu_sum_ = 0, lambda_sum_ = 0;
+  std::vector<LineNodeRule<Real, Quadrature>> rules_;
+  std::vector<Real> t_;
+};
+
+}  // namespace viscoroll
