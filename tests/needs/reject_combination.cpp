@@ -6,9 +6,8 @@
 #include <viscoroll/viscoroll.hpp>
 
 #if VISCOROLL_REJECT_CASE == 1
-// Several retardation times in the single-time line theory: SingleTimeModel.
-viscoroll::LineSolver<double, viscoroll::GeneralizedMaxwell<double>> solver(
-    viscoroll::GeneralizedMaxwell<double>(1.0, 0.5, {{1.0, 1.0}, {2.0, 10.0}}));
+// A type that is not a constitutive model where the line solver needs one: ConstitutiveModel.
+viscoroll::LineSolver<double, double> solver(1.0);
 #elif VISCOROLL_REJECT_CASE == 2
 // An adaptive rule where the line solver evaluates its kernels on fixed nodes: NodalQuadratureRule.
 viscoroll::LineSolver<double, viscoroll::StandardLinearSolid<double>,

@@ -43,13 +43,14 @@ static_assert(PlaneAccepts<double, StandardLinearSolid<double>, GaussLegendre<do
 static_assert(PlaneAccepts<float, Elastic<float>, AdaptiveGaussKronrod<float>>);
 static_assert(LineAccepts<double, StandardLinearSolid<double>, GaussLegendre<double, 16>>);
 static_assert(LineAccepts<long double, Elastic<long double>, GaussLegendre<long double, 12>>);
-// The plane solver takes a spectrum (docs/theory.md, section 12) ...
+// The plane and the line solver take a spectrum (docs/theory.md, sections 12 and 14) ...
 static_assert(PlaneAccepts<double, GeneralizedMaxwell<double>, GaussLegendre<double, 24>>);
 static_assert(PlaneAccepts<double, PronyRelaxation<double>, GaussLegendre<double, 16>>);
-// ... and those that cannot: a spectrum of several times in the single-time line solver, a
-// scalar that is not the material's, an adaptive rule where the line solver needs fixed nodes.
+static_assert(LineAccepts<double, PronyRelaxation<double>, GaussLegendre<double, 12>>);
+// ... and those that cannot: a scalar that is not the material's, an adaptive rule where the
+// line solver needs fixed nodes, a type that is not a constitutive model.
 static_assert(!PlaneAccepts<float, PronyRelaxation<double>, GaussLegendre<float, 24>>);
-static_assert(!LineAccepts<double, PronyRelaxation<double>, GaussLegendre<double, 12>>);
+static_assert(!LineAccepts<double, double, GaussLegendre<double, 12>>);
 static_assert(!LineAccepts<float, StandardLinearSolid<double>, GaussLegendre<float, 12>>);
 static_assert(!LineAccepts<double, StandardLinearSolid<double>, AdaptiveGaussKronrod<double>>);
 

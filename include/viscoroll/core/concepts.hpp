@@ -71,7 +71,8 @@ concept ConstitutiveModel = RealScalar<typename M::real_type> && requires(const 
 /// A constitutive model with at most one memory term, fixed at compile time (Elastic,
 /// StandardLinearSolid): the plane solver's closed forms (P4)-(P7) and the paper's line theory
 /// (Sections 5-7) are written for the single relaxation time of Eq. (1). A material with a
-/// spectrum of several times (PronyCreep, PronyRelaxation) is solved by the BemSolver.
+/// spectrum of several times (PronyCreep, PronyRelaxation) takes the generalisations of
+/// docs/theory.md sections 12 and 14 in the plane and the line solver.
 template <class M>
 concept SingleTimeModel =
     ConstitutiveModel<M> && (M::memory_term_count == 0 || M::memory_term_count == 1);

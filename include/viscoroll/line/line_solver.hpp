@@ -33,12 +33,16 @@
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
+#include <viscoroll/line/line_spectrum.hpp>
+#include <viscoroll/material/detail/prony_spectrum.hpp>
+#include <viscoroll/material/elastic.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/numerics/least_squares_minimum.hpp>
 #include <viscoroll/numerics/levenberg_marquardt.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
+#include <boost/math/tools/roots.hpp>
 
 namespace viscoroll {
 
@@ -104,12 +108,16 @@ struct LineOptions {
 };
 
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
-/// quadrature rule (applied on the graded panels of every line integral).
-template <RealScalar Real, SingleTimeModel Material, class Quadrature = GaussLegendre<Real, 12>>
+/// quadrature rule (applied on the graded panels of every line integral). A material with one
+/// memory term (SingleTimeModel) is the paper's theory and its Solution a LineSolution; a
+/// spectrum of several terms is the theory of docs/theory.md section 14 (line/line_spectrum.hpp)
+/// and its Solution a LineSpectrumSolution.
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 12>>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 class LineSolver {
  public:
-  using Solution = LineSolution<Real, Quadrature>;
+  using Solution = std::conditional_t<SingleTimeModel<Material>, LineSolution<Real, Quadrature>,
+                                      LineSpectrumSolution<Real, Quadrature>>;
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 
@@ -129,7 +137,8 @@ class LineSolver {
   Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const;
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
-  LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const {
+  LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const
+      requires SingleTimeModel<Material> {
     scene.validate();
     const Real c = material_.instantaneous_compliance();
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
@@ -493,14 +502,231 @@ class LineSolver {
     for (auto& w : line_bound_warnings(sol, tolerance)) sol.warnings.push_back(std::move(w));
   }
 
+  /// The line solver for a spectrum (docs/theory.md section 14): the terms classified at the
+  /// scene's speed as the plane solver does (relaxed ones, V tau_k <= eps a0, folded into the
+  /// compliance; not started ones, strip_is_glassy, dropped); none active: the static closed
+  /// form of the remaining compliance; one: the standard linear solid (the paper's theory, the
+  /// same digits as LineSolver over that material); two or more: LineSpectrumResidual.
+  Solution solve_spectrum(const LineScene<Real>& scene, const Solution* start) const
+      requires(!SingleTimeModel<Material>) {
+    using std::cbrt;
+    using std::log;
+    using std::pow;
+    scene.validate();
+    detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1,
+                    "basis", int(options_.basis),
+                    "LineBasis::t_squared with oversampling 1 for a material with a spectrum");
+    const Real sqrt_eps = std::sqrt(std::numeric_limits<Real>::epsilon());
+    const Real c = material_.instantaneous_compliance();
+    const auto& terms = material_.memory_terms();
+    Real creep_ratio = 0;
+    for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
+    const auto inputs = [&] {
+      return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
+             ", load = " + detail::format_value(scene.load) +
+             ", speed = " + detail::format_value(scene.speed) +
+             ", compliance = " + detail::format_value(c) +
+             ", sum of f = " + detail::format_value(creep_ratio) +
+             ", terms = " + std::to_string(terms.size());
+    };
+    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+    const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
+    const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
+    detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
+    const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
+    // The long-term static contact, compliance c (1 + F): the unit of length.
+    const auto slow_units = static_line_contact_in_units<Real>(
+        k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
+    const Units u{k1.m, c2, k1.e, slow_units.length};
+    const StaticLineContact<Real> slow = slow_units.contact;
+    // Classify the terms (lengths in units).
+    const auto speed = binary<Real>(scene.speed);
+    Real relaxed = 0, glassy_f = 0;
+    std::vector<detail::SpectrumTerm<Real>> active;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      const Real f = terms[k].f, tau = terms[k].tau;
+      if (!(f > 0)) continue;
+      if (!(scene.speed > 0) || !(tau > 0)) {
+        relaxed += f;
+        continue;
+      }
+      const auto t = binary<Real>(tau);
+      const Real lambda = times_power_of_two(Real(speed.m * t.m), speed.e + t.e - u.length);
+      // Relaxed: V tau_k <= sqrt(eps) a0 moves a, b and chi/C1 by O(V tau_k) <= sqrt(eps) a0 (P6),
+      // below the line theory's own error, and keeps the strips out of the slow regime of the
+      // line equations (docs/line-solver.md), where they have no root.
+      if (lambda <= sqrt_eps * slow.a0)
+        relaxed += f;
+      else if (strip_is_glassy(lambda, creep_ratio, slow.a0))
+        glassy_f += f;
+      else
+        active.push_back({f, lambda});
+    }
+    // Relaxed terms: c -> c (1 + relaxed), the active f -> f / (1 + relaxed) (R6b).
+    for (auto& t : active) t.w /= 1 + relaxed;
+    const auto merged = detail::merge_spectrum(std::move(active));
+    const Real c_eff = c * (1 + relaxed);
+    Solution sol{};
+    sol.c1 = scene.c1;
+    sol.active_terms = static_cast<int>(merged.size());
+    if (merged.size() <= 1) {
+      // The standard linear solid (or the elastic solid) of the remaining compliance: its own
+      // solver, in the caller's units.
+      const Real pi = boost::math::constants::pi<Real>();
+      const Real mu = 1 / (2 * pi * c_eff);  // c = (1 - nu)/(2 pi mu) with nu = 0
+      LineSolution<Real, Quadrature> one = [&] {
+        if (merged.empty()) {
+          const LineSolver<Real, Elastic<Real>, Quadrature> elastic(Elastic<Real>(mu, Real(0)),
+                                                                   options_);
+          const auto e = elastic.solve(scene);
+          return LineSolution<Real, Quadrature>(e);
+        }
+        // tau back from lambda (units) through the speed: lambda 2^length / V.
+        const Real tau = times_power_of_two(merged[0].q, u.length) / scene.speed;
+        const LineSolver<Real, StandardLinearSolid<Real>, Quadrature> sls(
+            StandardLinearSolid<Real>(mu, Real(0), merged[0].w, tau), options_);
+        const LineSolution<Real, Quadrature>* seed =
+            start != nullptr && start->single ? &*start->single : nullptr;
+        return sls.solve(scene, seed);
+      }();
+      sol.shape = one.shape;
+      sol.d = one.d;
+      sol.chi = one.chi;
+      sol.converged = one.converged;
+      sol.root = one.root;
+      sol.reason = one.reason;
+      sol.iterations = one.iterations;
+      sol.residual = one.residual;
+      sol.warnings = one.warnings;
+      const auto full = static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
+      sol.a_long_term = full.a0;
+      sol.l_long_term = full.l;
+      sol.d_long_term = full.d;
+      if (!merged.empty()) sol.single = std::move(one);
+      return sol;
+    }
+    SpectrumLengths<Real> lengths;
+    for (const auto& t : merged) {
+      lengths.retardation.push_back(t.q);
+      lengths.creep_ratio += t.w;
+    }
+    for (const auto& t : detail::convert_spectrum(
+             merged, detail::SpectrumDirection::creep_to_relaxation, Real(1), Real(1)))
+      lengths.relaxation.push_back(t.q);
+    // The static contact of the terms solved for, c_eff (1 + F'), in the same units: lengths
+    // scale as the cube root of the compliance (Eq. 47 with (48)), d as its square.
+    const Real s = cbrt((1 + relaxed) * (1 + lengths.creep_ratio) / (1 + creep_ratio));
+    const StaticLineContact<Real> eff{slow.a0 * s, slow.l * s, slow.d * s * s};
+    const LineSpectrumProblem<Real> prob{u.c1, u.c2, lengths, eff.a0, eff.l,
+                                         u.c1 * eff.a0 * eff.a0 * eff.l / 3};
+    // The cold start: the plane strip of the spectrum at the load whose long-term width is a0
+    // ((S8), TOMS 748 as the plane solver), shrunk as the 3-D widths, (1 + F)^(-1/3).
+    LineShape<Real> shape;
+    LineSpectrumMoments<Real> moments;
+    Real d;
+    if (start != nullptr && start->converged && !start->moments.gamma.empty()) {
+      shape = start->shape;
+      shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
+      shape.l = times_power_of_two(shape.l, -u.length);
+      moments = start->moments;
+      d = times_power_of_two(start->d, -u.curvature - 2 * u.length);
+    } else {
+      const auto h = [&](Real A) {
+        const auto st = spectrum_strip(A * eff.a0, lengths);
+        return A * A + 2 * st.g0 / (eff.a0 * eff.a0) - 1;
+      };
+      std::uintmax_t max_iter = 200;
+      const Real lo = 1 / std::sqrt(1 + lengths.creep_ratio);
+      const Real h_lo = h(lo), h_hi = h(Real(1));
+      Real A = h_lo >= 0 ? lo : Real(1);
+      if (h_lo < 0 && h_hi > 0) {
+        const auto bracket = boost::math::tools::toms748_solve(
+            h, lo, Real(1), h_lo, h_hi,
+            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits / 2),
+            max_iter);
+        A = (bracket.first + bracket.second) / 2;
+      }
+      const auto ps = spectrum_strip(A * eff.a0, lengths);
+      const Real ratio = pow(A, Real(2) / 3);
+      shape = LineShape<Real>{eff.a0, eff.l * ratio, {log(ratio)}, {ps.b / eff.a0}};
+      moments = {{ps.g0 / (A * A * eff.a0 * eff.a0)}, {ps.centroid / eff.a0}};
+      d = eff.d * ratio * ratio;
+    }
+    const numerics::LeastSquaresOptions<Real> settings{.max_iterations = options_.max_iterations,
+                                                       .root_tolerance = root_tolerance(),
+                                                       .analytic_jacobian = false};
+    int iterations = 0;
+    Vector r;
+    numerics::LeastSquaresOutcome out;
+    std::optional<LineSpectrumResidual<Real, Quadrature>> last;
+    for (const int n : continuation_stages(options_.terms)) {
+      last.emplace(prob, n);
+      Vector x = last->pack(shape, moments, d);
+      r.resize(last->equations());
+      if (!(*last)(x, r)) {
+        out = {};
+        out.undefined = true;
+        out.reason = "initial guess outside the domain";
+        break;
+      }
+      out = numerics::levenberg_marquardt(*last, x, r, settings);
+      iterations += out.iterations;
+      shape = last->shape(x);
+      moments = last->moments(x);
+      d = last->penetration(x);
+      if (out.undefined) break;
+    }
+    const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
+    sol.shape = shape;
+    sol.moments = moments;
+    sol.d = d;
+    sol.converged = out.converged && !out.undefined && rmax <= root_tolerance();
+    sol.root = sol.converged;
+    sol.reason = out.converged && !sol.converged
+                     ? "a least-squares minimum (the spectrum's line equations have no root here)"
+                     : out.reason;
+    sol.iterations = iterations;
+    sol.residual = out.undefined ? std::numeric_limits<Real>::quiet_NaN() : rmax;
+    sol.chi = (boost::math::isfinite)(rmax) ? u.c1 * last->centroid(shape, moments) : Real(0);
+    sol.a_long_term = slow.a0;
+    sol.l_long_term = slow.l;
+    sol.d_long_term = slow.d;
+    if (sol.converged && !(sol.d > 0 && shape.a(Real(0)) > 0 && shape.l > 0)) {
+      sol.converged = false;
+      sol.root = false;
+      sol.reason = "a root of the line equations that is not a contact (d, a(0) or l not positive)";
+    }
+    for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
+      sol.warnings.push_back(std::move(w));
+    // The caller's units (as solve()).
+    const int length = u.length, curvature = u.curvature;
+    const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
+      if (!sol.converged) return times_power_of_two(x, exponent);
+      return detail::representable(x, exponent, what, inputs, zero_allowed);
+    };
+    in(sol.shape.a(Real(0)), length, "the half width a(0)", false);
+    in(sol.shape.b(Real(0)), length, "the offset b(0)", true);
+    sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
+    sol.shape.l = in(sol.shape.l, length, "the half length l", false);
+    sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
+    sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
+    sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
+    sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
+    sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
+    return sol;
+  }
+
   Material material_;
   LineOptions options_;
 };
 
-template <RealScalar Real, SingleTimeModel Material, class Quadrature>
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
                                                    const Solution* start) const -> Solution {
+  if constexpr (!SingleTimeModel<Material>) {
+    return solve_spectrum(scene, start);
+  } else {
   scene.validate();
   // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic): the
   // strips' G (36) and the leading-edge condition's kernel are formed from V tau and f.
@@ -569,12 +795,13 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
   sol.vtau = in(sol.vtau, length, "V tau", true);
   sol.c1 = scene.c1;
   return sol;
+  }
 }
 
 /// The scalar deduced from the material: LineSolver solver(StandardLinearSolid<double>(...)).
-template <SingleTimeModel Material>
+template <ConstitutiveModel Material>
 LineSolver(Material) -> LineSolver<typename Material::real_type, Material>;
-template <SingleTimeModel Material>
+template <ConstitutiveModel Material>
 LineSolver(Material, LineOptions) -> LineSolver<typename Material::real_type, Material>;
 
 /// The common case: double precision, standard linear solid, 12-point Gauss-Legendre panels.

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <boost/math/special_functions/fpclassify.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -25,6 +26,8 @@
 #include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
+#include <viscoroll/line/line_solution.hpp>
+#include <optional>
 
 namespace viscoroll {
 
@@ -78,7 +81,14 @@ class LineSpectrumResidual {
     // on the nearest pole of G0, where I0(a/mu_1) = 0 (f of the rule such that (1 + f)/V =
     // 1/mu_1).
     scale_ = basis == LineBasis::s_mapped ? Real(mu[0] / p_.a_ref) : Real(0);
-    for (const Real l : lam) rules_.emplace_back(basis_, scale_, terms, l, l / mu[0] - 1);
+    // Terms with lambda_k >= slow_fraction() a_ref carry the line integrals in their
+    // leading-edge condition (S12); slower ones take the strip's own (plane) condition, right
+    // side zero (S16): there the line correction is as large as its own error and the line
+    // equations have no root (the slow regime, docs/theory.md section 4).
+    for (const Real l : lam) {
+      line_term_.push_back(l >= slow_fraction() * p_.a_ref);
+      rules_.emplace_back(basis_, scale_, terms, l, l / mu[0] - 1);
+    }
     const Real pi = boost::math::constants::pi<Real>();
     const int m = points();
     for (int i = 1; i <= m; ++i) {
@@ -86,6 +96,11 @@ class LineSpectrumResidual {
       t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, scale_, v)));
     }
   }
+
+  /// lambda_k / a_ref below which a term's leading-edge condition is the strip's own (S16).
+  static Real slow_fraction() { return Real(1) / 10; }
+  /// The terms whose leading-edge condition carries the line integrals (S12).
+  int line_terms() const { return int(std::count(line_term_.begin(), line_term_.end(), true)); }
 
   int terms() const { return n_; }
   int points() const { return n_ + 1; }
@@ -114,12 +129,17 @@ class LineSpectrumResidual {
   Vector pack(const LineShape<Real>& given, const LineSpectrumMoments<Real>& mo, Real d) const {
     using std::log;
     const bool same = given.basis == basis_ && given.scale == scale_;
-    const LineShape<Real> s = same ? given : given.reexpanded(basis_, n_, scale_);
+    LineShape<Real> s = same ? given : given.reexpanded(basis_, n_, scale_);
+    // A shape in another unit a_ref (a seed whose active terms differ): the same a(y), b(y).
+    const Real ratio = s.a_ref / p_.a_ref;
+    if (s.alpha.empty()) s.alpha.push_back(Real(0));
+    s.alpha[0] += log(ratio);
+    for (Real& b : s.beta) b *= ratio;
     Vector x = Vector::Zero(unknowns());
     for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
     for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
     for (int k = 0; k <= n_ && k < int(mo.gamma.size()); ++k) x[2 * n_ + 1 + k] = mo.gamma[k];
-    for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k) x[3 * n_ + 2 + k] = mo.kappa[k];
+    for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k) x[3 * n_ + 2 + k] = mo.kappa[k] * ratio;
     x[4 * n_ + 3] = log(s.l / p_.l_ref);
     x[4 * n_ + 4] = d / (p_.c1 * p_.a_ref * p_.a_ref);
     return x;
@@ -152,6 +172,10 @@ class LineSpectrumResidual {
     const std::size_t m = rules_.size();
     std::vector<Real> right(m);
     for (std::size_t k = 0; k < m; ++k) {
+      if (!line_term_[k] && !(k == 0 && lhs34)) {
+        right[k] = 0;
+        continue;
+      }
       LineNodes<Real> nd;
       rules_[k].point(s, y, x0, nd);
       const std::size_t count = nd.yp.size();
@@ -163,7 +187,8 @@ class LineSpectrumResidual {
         if (!df0.empty()) df0[j] = there.f0 - here.f0;
       }
       // (S12): the right side is (L6) at lambda_k of Q_k.
-      right[k] = exterior_right(nd, dq, qk, x0, p_.lengths.retardation[k]);
+      right[k] = line_term_[k] ? exterior_right(nd, dq, qk, x0, p_.lengths.retardation[k])
+                               : Real(0);
       if (!df0.empty()) *lhs34 = near_field_strip(nd, df0, here.f0, here.a);
     }
     strip = spectrum_strip(here.a, p_.lengths, &right, p_.c1);
@@ -232,7 +257,48 @@ class LineSpectrumResidual {
   Real scale_ = 0;
   Real mu_sum_ = 0, lambda_sum_ = 0;
   std::vector<LineNodeRule<Real, Quadrature>> rules_;
+  std::vector<bool> line_term_;
   std::vector<Real> t_;
+};
+
+/// The line-contact solution for a material with a spectrum (LineSolver over PronyCreep,
+/// PronyRelaxation or GeneralizedMaxwell): the contact zone, the penetration, F0(y) and the
+/// rolling friction. With one memory term active at the scene's speed (the others relaxed, folded
+/// into the compliance, or not started, dropped) it is the standard linear solid's solution
+/// (`single`); with none, the static closed form.
+template <RealScalar Real, class Quadrature>
+struct LineSpectrumSolution {
+  LineShape<Real> shape;          ///< a(y), b(y), l
+  LineSpectrumMoments<Real> moments;  ///< gamma = G0/a^2 and kappa/a_ref (two or more terms)
+  Real d;                         ///< penetration (Eq. 27)
+  Real a_long_term;               ///< a0: half width at y = 0 of the static contact, c (1 + F)
+  Real l_long_term;               ///< l0: its half length
+  Real d_long_term;               ///< its penetration
+  Real chi;                       ///< rolling-friction coefficient C1 xbar (Eq. 51), (S15)
+  bool converged;                 ///< the iteration met its tolerance (true for a closed form)
+  bool root;                      ///< max |r| <= 64 sqrt(eps)
+  std::string reason;             ///< why it stopped
+  int iterations;                 ///< Levenberg-Marquardt iterations (0 for a closed form)
+  Real residual;                  ///< max |r| of the scaled equations
+  std::vector<std::string> warnings;
+  int active_terms;               ///< memory terms solved for at this speed
+  Real c1;
+  /// The standard linear solid's solution where exactly one term is active.
+  std::optional<LineSolution<Real, Quadrature>> single;
+
+  Real l() const { return shape.l; }
+  Real a(Real y) const { return shape.a(y); }
+  Real b(Real y) const { return shape.b(y); }
+  /// F0(y) = C1 a^2 (1/4 + G0/(2 a^2)), Eq. (33) with (S8): the load per unit length times the
+  /// long-term compliance of the terms solved for.
+  Real f0(Real y) const {
+    if (single) return single->f0(y);
+    const Real a = shape.a(y);
+    if (!(a > 0)) return Real(0);
+    if (moments.gamma.empty()) return c1 * a * a / 4;
+    const Real u = LineShape<Real>::coordinate(shape.basis, shape.scale, shape.one_minus_t2(y));
+    return c1 * a * a * (Real(1) / 4 + moments.gamma_at(u) / 2);
+  }
 };
 
 }  // namespace viscoroll

@@ -11,9 +11,9 @@
 // GeneralizedMaxwell<Real>(mu_d, nu, {{f, tau}, ...}) is PronyCreep<Real> of
 // material/prony.hpp, the creep (retardation) form; the relaxation form G(t) = G_inf +
 // sum g_i exp(-t / rho_i) is PronyRelaxation<Real>, and each converts exactly into the other.
-// Its memory_terms() are a run-time list (memory_term_count = dynamic_memory_terms), so the
-// solvers written for one time (SingleTimeModel: the plane and the line solver) reject it at
-// compile time rather than silently approximating it; the BemSolver takes it.
+// Its memory_terms() are a run-time list (memory_term_count = dynamic_memory_terms): not a
+// SingleTimeModel, so the plane and the line solver take their spectrum theories for it
+// (docs/theory.md sections 12 and 14); the BemSolver sums its memory terms.
 #pragma once
 
 #include <viscoroll/material/prony.hpp>

@@ -1,0 +1,45 @@
+// The line solver for a spectrum (docs/theory.md section 14) on the paper's proportions
+// (C2/C1 = (ln 20 - 1)/25, C1 = 1, load 1), in double, one thread, one cold solve:
+//   BM_line_spectrum/M/N/s: M terms (M = 2: (f, tau) = (3, 0.05), (6, 5); M = 20: f = 0.45,
+//                           tau = 10^-3 ... 10^3 evenly in log) at speed s/10, N Chebyshev terms.
+// Counters: active terms, iterations, converged (1/0).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+#include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/material/prony.hpp>
+
+namespace {
+
+viscoroll::PronyCreep<double> material(int m) {
+  if (m == 2) return viscoroll::PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}});
+  std::vector<viscoroll::PronyTerm<double>> terms;
+  for (int k = 0; k < m; ++k)
+    terms.push_back({9.0 / m, std::pow(10.0, -3 + 6.0 * k / (m - 1))});
+  return viscoroll::PronyCreep<double>(1.0, 0.5, terms);
+}
+
+void BM_line_spectrum(benchmark::State& state) {
+  const viscoroll::LineSolver<double, viscoroll::PronyCreep<double>> solver(
+      material(static_cast<int>(state.range(0))),
+      viscoroll::LineOptions{.terms = static_cast<int>(state.range(1))});
+  const double speed = static_cast<double>(state.range(2)) / 10;
+  viscoroll::LineSpectrumSolution<double, viscoroll::GaussLegendre<double, 12>> s;
+  for (auto _ : state) {
+    s = solver.solve({.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 1.0, .speed = speed});
+    benchmark::DoNotOptimize(s.d);
+  }
+  state.counters["active"] = s.active_terms;
+  state.counters["iterations"] = s.iterations;
+  state.counters["converged"] = s.converged ? 1 : 0;
+}
+
+}  // namespace
+
+BENCHMARK(BM_line_spectrum)
+    ->Args({2, 4, 50})
+    ->Args({20, 4, 10})
+    ->Args({20, 4, 1000})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
