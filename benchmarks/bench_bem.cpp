@@ -5,7 +5,9 @@
 // 1,000,000-cell grid (N = 312) under 60 s with threads. Counters: d, chi, a(0), active-set and
 // GMRES iterations, the solver's set-up and iteration seconds. The environment variable
 // VISCOROLL_BEM_COARSE sets BemOptions::coarse_tolerance (0: every active set solved to the
-// tolerance, the GMRES steps without inexact early solves).
+// tolerance, the GMRES steps without inexact early solves). BM_bem_paper_scene_no_final_solve: the
+// same without the final solve of the converged active set (BemOptions::final_tolerance = 0), the
+// cost of that solve.
 //
 // BM_bem_apply: one application of the convolution operator u = K * p of (B6)-(B7) (the
 // real-to-complex 2-D FFT of the zero-padded grid and its inverse, FFTW where the build found it,
@@ -35,12 +37,13 @@
 
 namespace {
 
-void BM_bem_paper_scene(benchmark::State& state) {
+void paper_scene(benchmark::State& state, bool final_solve) {
   const double f = 9, nu = 0.5, mu = 1, c = (1 - nu) / (2 * std::acos(-1.0) * mu);
   viscoroll::BemOptions o;
   o.grid = static_cast<int>(state.range(0));
   o.threads = static_cast<int>(state.range(1));
   if (const char* e = std::getenv("VISCOROLL_BEM_COARSE")) o.coarse_tolerance = std::atof(e);
+  if (!final_solve) o.final_tolerance = 0;
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
   const viscoroll::BemScene<double> scene{
       .c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 5.0 / (3 * (1 + f) * c), .speed = 1.0};
@@ -61,6 +64,10 @@ void BM_bem_paper_scene(benchmark::State& state) {
   state.counters["setup_s"] = s.seconds_setup;
   state.counters["solve_s"] = s.seconds_solve;
 }
+
+void BM_bem_paper_scene(benchmark::State& state) { paper_scene(state, true); }
+/// The same without the final solve of the converged set (final_tolerance = 0): its cost.
+void BM_bem_paper_scene_no_final_solve(benchmark::State& state) { paper_scene(state, false); }
 
 /// The paper's grid for N elements per semi-axis (static Hertz ellipse of the long-term
 /// compliance): the same grid BemSolver::solve uses.
@@ -164,11 +171,7 @@ BENCHMARK_TEMPLATE(BM_bem_apply, long double)
 // Arguments: regime (0 elastic, 1 V tau = 0, 2 V tau/a0 = 1, 3 V tau/a0 = 1e12, 4 twenty terms), N.
 BENCHMARK(BM_bem_setup)->ArgsProduct({{0, 1, 2, 3}, {8, 16}})->Unit(benchmark::kMillisecond);
 // Issue 20: twenty terms against one (regime 4 against 2) on the paper's grids N = 16 and 32.
-BENCHMARK(BM_bem_setup)
-    ->Args({4, 16})
-    ->Args({2, 32})
-    ->Args({4, 32})
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_bem_setup)->Args({4, 16})->Args({2, 32})->Args({4, 32})->Unit(benchmark::kMillisecond);
 
 // Arguments: N, threads of the influence table.
 BENCHMARK(BM_bem_paper_scene)
@@ -181,6 +184,12 @@ BENCHMARK(BM_bem_paper_scene)
     ->Args({16, 2})
     ->Args({32, 2})
     ->Args({64, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_bem_paper_scene_no_final_solve)
+    ->Args({16, 1})
+    ->Args({32, 1})
+    ->Args({64, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 // The million-cell grid (N = 312: 1001 x 1001 cells), on two threads; one iteration per run.

@@ -22,8 +22,8 @@ TEST_CASE("bem: memory rows of many lengths at once are memory_row's", "[bem]") 
   // m hx eps/L (2.8e-13 at L = hx/64, m = 20); measured at most 1e-13 here.
   const double hx = 0.1, hy = 0.06;
   const int m = 20;
-  const std::vector<double> lengths{hx / 64, hx / 17, hx / 8, hx / 3, hx, 7 * hx, 1e2 * hx,
-                                    1e4 * hx, 1e10 * hx, 1e17 * hx};
+  const std::vector<double> lengths{hx / 64, hx / 17,  hx / 8,   hx / 3,    hx,
+                                    7 * hx,  1e2 * hx, 1e4 * hx, 1e10 * hx, 1e17 * hx};
   const MemoryRows<double> shared(m, hx, hy, lengths);
   for (const double y : {0.0, 0.06, 0.3, 3.0}) {
     const auto rows = shared(y);

@@ -65,7 +65,8 @@ std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
 
 /// (B6): the influence coefficients per unit pressure of every offset (di, dj), |di| < nx,
 /// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k. The memory
-/// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default).
+/// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default);
+/// two or more terms share their panels' nodes (MemoryRows; docs/bem.md, "Many memory terms").
 ///   - InfluenceTable(grid, c, terms, V, threads = 1): the table of the grid's offsets for the
 ///     memory terms (f_k, tau_k) at speed V, computed in coefficient_real_t<Real> and rounded
 ///     once, its rows shared among `threads` threads (the same table for any count);
@@ -89,8 +90,7 @@ class InfluenceTable {
       const W length = W(speed) * W(t.tau);
       if (length > 0 && length >= W(grid.hx) / 1024) shared.push_back(length);
     }
-    if (shared.size() >= 2)
-      shared_.emplace(grid.nx - 1, W(grid.hx), W(grid.hy), std::move(shared));
+    if (shared.size() >= 2) shared_.emplace(grid.nx - 1, W(grid.hx), W(grid.hy), std::move(shared));
     // The rows dj are independent: `threads` threads take every threads-th row each, so the table
     // is the same for any thread count.
     const int workers = std::max(1, std::min(threads, ny_));
@@ -145,8 +145,8 @@ class InfluenceTable {
       // shared rows in the terms' order (the constructor's selection) or of its own.
       const bool in_shared = shared_ && length > 0 && length >= hx / 1024;
       const std::vector<W> mem = !(length > 0) ? row
-                                 : in_shared  ? std::move(shared[next_shared++])
-                                              : memory_row<W, Quadrature>(m, y, hx, hy, length);
+                                 : in_shared   ? std::move(shared[next_shared++])
+                                               : memory_row<W, Quadrature>(m, y, hx, hy, length);
       for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
     }
     for (int i = -m; i <= m; ++i)
