@@ -816,7 +816,8 @@ int bem_table_threads(const Problem& p) {
   viscoroll::SweepOptions sweep;
   sweep.threads = p.threads;
   const std::size_t chunks = (p.speeds.size() + sweep.chunk - 1) / sweep.chunk;
-  const unsigned all = p.threads != 0 ? p.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned all =
+      p.threads != 0 ? p.threads : std::max(1u, std::thread::hardware_concurrency());
   return static_cast<int>(std::clamp(all / sweep.effective_threads(chunks), 1u, 1024u));
 }
 
