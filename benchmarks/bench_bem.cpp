@@ -5,7 +5,9 @@
 // 1,000,000-cell grid (N = 312) under 60 s with threads. Counters: d, chi, a(0), active-set and
 // GMRES iterations, the solver's set-up and iteration seconds. The environment variable
 // VISCOROLL_BEM_COARSE sets BemOptions::coarse_tolerance (0: every active set solved to the
-// tolerance, the GMRES steps without inexact early solves).
+// tolerance, the GMRES steps without inexact early solves). BM_bem_paper_scene_no_final_solve: the
+// same without the final solve of the converged active set (BemOptions::final_tolerance = 0), the
+// cost of that solve.
 //
 // BM_bem_apply: one application of the convolution operator u = K * p of (B6)-(B7) (the
 // real-to-complex 2-D FFT of the zero-padded grid and its inverse, FFTW where the build found it,
@@ -18,6 +20,11 @@
 // V tau / a0 = 0, 1 and 1e12 (glassy), N = 8 and 16. Elastic and V tau = 0 need only Love's
 // coefficients (B1)-(B2); V tau > 0 adds the exponential recurrence (B4)-(B5) per row, also in
 // the glassy limit, where the memory term is O((a/V tau) ln(V tau/a)) of the elastic one.
+// Regime 4 is a spectrum of 20 terms (PronyCreep, f_k = 0.5, tau_k log-spaced 1e-3 .. 1e3, the
+// twenty-term material of plane_vs_bem_spectrum.cpp) at V = a0/tau for the spectrum's geometric
+// middle, V tau_k / a0 = 1e-3 .. 1e3, on the same grid as the standard linear solid (the paper's
+// load 5/(3 (1 + f) c) makes it independent of f): issue 20's target, the 20-term table within
+// 5 times the one-term table (regime 2), at N = 16 and 32.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -26,15 +33,17 @@
 #include <vector>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/material/elastic.hpp>
+#include <viscoroll/material/prony.hpp>
 
 namespace {
 
-void BM_bem_paper_scene(benchmark::State& state) {
+void paper_scene(benchmark::State& state, bool final_solve) {
   const double f = 9, nu = 0.5, mu = 1, c = (1 - nu) / (2 * std::acos(-1.0) * mu);
   viscoroll::BemOptions o;
   o.grid = static_cast<int>(state.range(0));
   o.threads = static_cast<int>(state.range(1));
   if (const char* e = std::getenv("VISCOROLL_BEM_COARSE")) o.coarse_tolerance = std::atof(e);
+  if (!final_solve) o.final_tolerance = 0;
   const viscoroll::BemSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0), o);
   const viscoroll::BemScene<double> scene{
       .c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 5.0 / (3 * (1 + f) * c), .speed = 1.0};
@@ -55,6 +64,10 @@ void BM_bem_paper_scene(benchmark::State& state) {
   state.counters["setup_s"] = s.seconds_setup;
   state.counters["solve_s"] = s.seconds_solve;
 }
+
+void BM_bem_paper_scene(benchmark::State& state) { paper_scene(state, true); }
+/// The same without the final solve of the converged set (final_tolerance = 0): its cost.
+void BM_bem_paper_scene_no_final_solve(benchmark::State& state) { paper_scene(state, false); }
 
 /// The paper's grid for N elements per semi-axis (static Hertz ellipse of the long-term
 /// compliance): the same grid BemSolver::solve uses.
@@ -90,20 +103,35 @@ void BM_bem_apply(benchmark::State& state) {
   state.counters["cells"] = static_cast<double>(grid.size());
 }
 
-/// Regime of BM_bem_setup: 0 elastic, 1 SLS V tau = 0, 2 SLS V tau/a0 = 1, 3 SLS V tau/a0 = 1e12.
+/// The twenty-term spectrum of regime 4: f_k = 0.5, tau_k = 10^(-3 + 6 k/19), k = 0 .. 19.
+viscoroll::PronyCreep<double> twenty_terms() {
+  std::vector<viscoroll::PronyTerm<double>> t;
+  for (int k = 0; k < 20; ++k) t.push_back({0.5, std::pow(10.0, -3 + 6.0 * k / 19)});
+  return viscoroll::PronyCreep<double>(1.0, 0.5, t);
+}
+
+/// Regime of BM_bem_setup: 0 elastic, 1 SLS V tau = 0, 2 SLS V tau/a0 = 1, 3 SLS V tau/a0 = 1e12,
+/// 4 twenty terms, V tau_k/a0 = 1e-3 .. 1e3.
 void BM_bem_setup(benchmark::State& state) {
   const int regime = static_cast<int>(state.range(0));
   const int n = static_cast<int>(state.range(1));
   const double f = 9;
   const viscoroll::StandardLinearSolid<double> sls(1.0, 0.5, f, 1.0);
   const auto grid = paper_grid<double>(sls, n, f);
-  const double speed = regime == 1 ? 0.0 : regime == 2 ? 1.0 : 1e12;  // a0 = 1, tau = 1
+  const double speed = regime == 1 ? 0.0 : regime == 3 ? 1e12 : 1.0;  // a0 = 1, tau = 1
   std::vector<viscoroll::PronyTerm<double>> terms;
   double compliance = sls.instantaneous_compliance();
   if (regime == 0) {
     const viscoroll::Elastic<double> elastic(1.0 / (1 + f), 0.5);  // the long-term modulus
     terms = viscoroll::bem::memory_terms_of(elastic);
     compliance = elastic.instantaneous_compliance();
+  } else if (regime == 4) {
+    const auto spectrum = twenty_terms();
+    // The grid of the spectrum's own scene (f = sum f_k = 10) is the standard linear solid's.
+    if (paper_grid<double>(spectrum, n, spectrum.creep_ratio()).hx != grid.hx)
+      state.SkipWithError("the twenty-term scene's grid differs from the SLS one");
+    terms = viscoroll::bem::memory_terms_of(spectrum);
+    compliance = spectrum.instantaneous_compliance();
   } else {
     terms = viscoroll::bem::memory_terms_of(sls);
   }
@@ -114,7 +142,7 @@ void BM_bem_setup(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   const char* names[] = {"Elastic", "SLS V tau/a0 = 0", "SLS V tau/a0 = 1",
-                         "SLS V tau/a0 = 1e12 (glassy)"};
+                         "SLS V tau/a0 = 1e12 (glassy)", "20 terms V tau/a0 = 1e-3 .. 1e3"};
   state.SetLabel(std::string(names[regime]) + ", " + std::to_string(grid.nx) + "x" +
                  std::to_string(grid.ny) + " cells");
   state.counters["memory_terms"] = static_cast<double>(terms.size());
@@ -140,8 +168,10 @@ BENCHMARK_TEMPLATE(BM_bem_apply, long double)
     ->Arg(32)
     ->Arg(64)
     ->Unit(benchmark::kMicrosecond);
-// Arguments: regime (0 elastic, 1 V tau = 0, 2 V tau/a0 = 1, 3 V tau/a0 = 1e12), N.
+// Arguments: regime (0 elastic, 1 V tau = 0, 2 V tau/a0 = 1, 3 V tau/a0 = 1e12, 4 twenty terms), N.
 BENCHMARK(BM_bem_setup)->ArgsProduct({{0, 1, 2, 3}, {8, 16}})->Unit(benchmark::kMillisecond);
+// Issue 20: twenty terms against one (regime 4 against 2) on the paper's grids N = 16 and 32.
+BENCHMARK(BM_bem_setup)->Args({4, 16})->Args({2, 32})->Args({4, 32})->Unit(benchmark::kMillisecond);
 
 // Arguments: N, threads of the influence table.
 BENCHMARK(BM_bem_paper_scene)
@@ -154,6 +184,12 @@ BENCHMARK(BM_bem_paper_scene)
     ->Args({16, 2})
     ->Args({32, 2})
     ->Args({64, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_bem_paper_scene_no_final_solve)
+    ->Args({16, 1})
+    ->Args({32, 1})
+    ->Args({64, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 // The million-cell grid (N = 312: 1001 x 1001 cells), on two threads; one iteration per run.

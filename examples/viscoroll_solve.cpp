@@ -12,8 +12,10 @@
 // --method bem: the 3-D boundary-element solver (--grid N elements per semi-axis of the static
 // long-term Hertz ellipse, default 16); each line carries a0 = a(0), b0 = b(0), l, y_minus,
 // y_plus, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason, iterations (active set),
-// gmres_iterations, residual and warnings. docs/bem.md. Warnings of either method also go to
-// stderr, one per line; they do not change the exit status.
+// gmres_iterations, residual and warnings. docs/bem.md. --threads N also builds each solve's
+// influence table on threads (BemOptions::threads): the N threads are shared by the sweep's
+// chunks running at once (bem_table_threads). Warnings of either method also go to stderr, one
+// per line; they do not change the exit status.
 // A scene's material of model "prony" (a Prony series in relaxation form, or fitted from a DMA
 // file, with an optional WLF or Arrhenius shift) is the bem method's only: it is solved by
 // BemSolver<double, PronyRelaxation<double>> at each temperature (--temperature, else the scene's,
@@ -22,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,6 +36,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -805,6 +809,18 @@ viscoroll::PronyRelaxation<double> prony_at(const Problem& p, double temperature
   return p.shift ? viscoroll::at_temperature(*p.prony, *p.shift, temperature) : *p.prony;
 }
 
+/// BemOptions::threads for --threads N (0: every core): the N threads shared by the sweep's chunks
+/// that run at once, each chunk's solves building their influence tables on N / (chunks at once)
+/// of them, at least 1 and at most BemOptions' 1024. The table does not depend on the count.
+int bem_table_threads(const Problem& p) {
+  viscoroll::SweepOptions sweep;
+  sweep.threads = p.threads;
+  const std::size_t chunks = (p.speeds.size() + sweep.chunk - 1) / sweep.chunk;
+  const unsigned all =
+      p.threads != 0 ? p.threads : std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<int>(std::clamp(all / sweep.effective_threads(chunks), 1u, 1024u));
+}
+
 /// The boundary-element solver; every solve shares one grid (it is sized by the static
 /// long-term contact), and the speeds are swept as the line method's are, each seeded with the
 /// previous converged contact of its chunk. A prony material is solved at each temperature.
@@ -812,6 +828,7 @@ int run_bem(const Problem& p, Output& out) {
   const double c2 = required_c2(p, "bem");
   viscoroll::BemOptions options;
   options.grid = bem_grid(p);
+  options.threads = bem_table_threads(p);
   const auto scene_at = [&](double speed) {
     return viscoroll::BemScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
   };

@@ -155,3 +155,30 @@ TEST_CASE("cli: viscoroll-solve --method bem solves the extreme scenes of issue 
                    "number") != std::string::npos);
   CHECK(r.err.find("rescale the units") != std::string::npos);
 }
+
+TEST_CASE("cli: --threads builds the bem method's influence tables too, the same numbers",
+          "[cli][bem]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // Two speeds, one chunk of the sweep: --threads 2 (and 0, every core) go to each solve's table
+  // (BemOptions::threads), whose rows do not depend on the count: the lines of --threads 1 bit for
+  // bit, but for their wall time.
+  const auto one = run(arguments({"--grid=6", "--speed=1,2", "--threads=1"}));
+  INFO("stdout: " << one.out << "\nstderr: " << one.err);
+  REQUIRE(one.status == 0);
+  auto a = viscoroll::cli_test::json_lines(one.out);
+  REQUIRE(a.size() == 2);
+  for (const char* threads : {"2", "0"}) {
+    const auto r = run(arguments({"--grid=6", "--speed=1,2", std::string("--threads=") + threads}));
+    INFO("--threads " << threads << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    auto b = viscoroll::cli_test::json_lines(r.out);
+    REQUIRE(b.size() == a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      a[k].erase("seconds");
+      b[k].erase("seconds");
+      CHECK(b[k]["converged"] == true);
+      CHECK(a[k].dump() == b[k].dump());
+    }
+  }
+}

@@ -65,6 +65,12 @@ struct BemOptions {
   /// early solves); the set that one leaves unchanged is solved again to `tolerance`, which alone
   /// decides convergence. 0 solves every set to `tolerance`.
   double coarse_tolerance = 1e-3;
+  /// GMRES' relative residual of a final solve of the converged active set (or 32 eps of the
+  /// scalar, if larger; numerics/active_set.hpp): GMRES' `tolerance` bounds the pressure only to
+  /// about cond times it (a(0) and the peak pressure to about 1e-8 at 1e-10), and two iterations
+  /// that reach the same set differently (coarse_tolerance or not) differ by that much; solved
+  /// again to 1e-13, they agree to 1e-10 (docs/bem.md, B11). 0 (or >= tolerance): no final solve.
+  double final_tolerance = 1e-13;
   /// Threads that build the influence table (its rows are independent; the result does not
   /// depend on the count). 1 leaves the other cores to a sweep over speeds.
   int threads = 1;
@@ -89,6 +95,9 @@ struct BemOptions {
     detail::require(coarse_tolerance == 0 || (coarse_tolerance >= 1e-15 && coarse_tolerance <= 0.1),
                     "coarse_tolerance", coarse_tolerance,
                     "0 (off) or 1e-15 <= coarse_tolerance <= 0.1");
+    detail::require(final_tolerance == 0 || (final_tolerance >= 1e-15 && final_tolerance <= 1e-3),
+                    "final_tolerance", final_tolerance,
+                    "0 (off) or 1e-15 <= final_tolerance <= 1e-3");
     detail::require(threads >= 1 && threads <= 1024, "threads", threads, "1 <= threads <= 1024");
     detail::require(max_active_set_iterations >= 1 && max_active_set_iterations <= 100000,
                     "max_active_set_iterations", max_active_set_iterations,

@@ -193,6 +193,11 @@ class BemSolver {
     auto state = initial_state(scene, grid, hertz, terms, compliance, start);
     // The requested tolerance, but no tighter than the scalar allows (32 eps).
     const Real tol = std::max(Real(options_.tolerance), 32 * std::numeric_limits<Real>::epsilon());
+    // The final solve's, likewise (none where that is not below tol, e.g. in float).
+    const Real final_tol =
+        options_.final_tolerance > 0
+            ? std::max(Real(options_.final_tolerance), 32 * std::numeric_limits<Real>::epsilon())
+            : Real(0);
     const auto report = numerics::active_set(
         ActiveSetOperator{op, options_.precondition ? &symbol : nullptr}, h,
         numerics::LoadEquation<Real>{
@@ -201,7 +206,8 @@ class BemSolver {
                                           .restart = options_.restart,
                                           .max_iterations = options_.max_active_set_iterations,
                                           .max_krylov_iterations = options_.max_krylov_iterations,
-                                          .coarse_tolerance = Real(options_.coarse_tolerance)},
+                                          .coarse_tolerance = Real(options_.coarse_tolerance),
+                                          .final_tolerance = final_tol},
         state);
     Solution sol = measure(scene, grid, hertz, op, h, std::move(state), report);
     judge(sol, scene, terms, length_exponent);

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <thread>
 #include <vector>
 #include <viscoroll/bem/bem_scene.hpp>
@@ -64,7 +65,8 @@ std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
 
 /// (B6): the influence coefficients per unit pressure of every offset (di, dj), |di| < nx,
 /// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k. The memory
-/// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default).
+/// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default);
+/// two or more terms share their panels' nodes (MemoryRows; docs/bem.md, "Many memory terms").
 ///   - InfluenceTable(grid, c, terms, V, threads = 1): the table of the grid's offsets for the
 ///     memory terms (f_k, tau_k) at speed V, computed in coefficient_real_t<Real> and rounded
 ///     once, its rows shared among `threads` threads (the same table for any count);
@@ -79,6 +81,16 @@ class InfluenceTable {
       : nx_(grid.nx),
         ny_(grid.ny),
         k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)) {
+    // Memory lengths L_k = V tau_k; those of at least hx/1024, when two or more, share their
+    // panels' nodes (MemoryRows): a shorter one would add more shared panels per step,
+    // log2(hx/(16 L)), than its own memory_row costs (about 6).
+    using W = coefficient_real_t<Real>;
+    std::vector<W> shared;
+    for (const auto& t : terms) {
+      const W length = W(speed) * W(t.tau);
+      if (length > 0 && length >= W(grid.hx) / 1024) shared.push_back(length);
+    }
+    if (shared.size() >= 2) shared_.emplace(grid.nx - 1, W(grid.hx), W(grid.hy), std::move(shared));
     // The rows dj are independent: `threads` threads take every threads-th row each, so the table
     // is the same for any thread count.
     const int workers = std::max(1, std::min(threads, ny_));
@@ -124,10 +136,17 @@ class InfluenceTable {
     for (int i = -m; i <= m; ++i)
       row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
     std::vector<W> total = row;
+    std::vector<std::vector<W>> shared;
+    if (shared_) shared = (*shared_)(y);
+    std::size_t next_shared = 0;
     for (const auto& t : terms) {
       const W length = W(speed) * W(t.tau);
-      // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4).
-      const std::vector<W> mem = length > 0 ? memory_row<W, Quadrature>(m, y, hx, hy, length) : row;
+      // V tau = 0: M = K_e (B3), the long-term compliance; otherwise the recurrence (B4), of the
+      // shared rows in the terms' order (the constructor's selection) or of its own.
+      const bool in_shared = shared_ && length > 0 && length >= hx / 1024;
+      const std::vector<W> mem = !(length > 0) ? row
+                                 : in_shared   ? std::move(shared[next_shared++])
+                                               : memory_row<W, Quadrature>(m, y, hx, hy, length);
       for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
     }
     for (int i = -m; i <= m; ++i)
@@ -138,6 +157,7 @@ class InfluenceTable {
 
   int nx_, ny_;
   std::vector<Real> k_;
+  std::optional<MemoryRows<coefficient_real_t<Real>, Quadrature>> shared_;
 };
 
 /// (B7): the operator u = K * p applied by real-to-complex FFT (fft_backend.hpp: FFTW where the

@@ -247,5 +247,176 @@ requires NodalQuadratureRule<Quadrature, Real> std::vector<Real> memory_row(int 
   return out;
 }
 
+/// (B4), (B5) for several memory lengths at once (docs/bem.md, "Many memory terms"): the lengths
+/// share their panels' nodes, so that Love's coefficient K_e, nearly all the cost of a row, is
+/// evaluated once per node for all of them; each length weights the node values by its own
+/// e^(-(s - X_i)/L)/L. The shared panels are memory_row's refined for the shortest length L_min:
+/// on a step [X_i, X_i + hx] the midpoint, the kinks' grading (B4) and the points 8 L_min 2^k
+/// (k >= 0) under hx/2; on the tail (B5) the points s - X_m = delta 2^k from delta =
+/// min(L_min, R0)/2, R0 = max(hx, X_m) <= R, up to L_max u_max. A panel [A, 2A] from the weight's
+/// origin integrates e^(-s/L) by 16 points to below 1e-29 of the whole integral for every L:
+/// A <= 8 L is memory_row's criterion (panels at most 8 L long), and beyond it the weight has
+/// fallen by e^(-A/L) faster than the rule's error grows. Every panel is one of memory_row's or
+/// inside one, so K_e is as well resolved; the step integrals run to X_i + hx for every length
+/// (memory_row stops at L u_max, the weight beyond being under eps/400). The rows agree with
+/// memory_row's to rounding (tests/bem/memory_rows.test.cpp).
+///   - MemoryRows(m, hx, hy, lengths): the shared nodes and every length's weights, lengths > 0;
+///   - operator()(y): the rows M_L(X_i, y), X_i = i hx, i = -m .. m (index i + m), one per length
+///     in the order given.
+template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
+requires NodalQuadratureRule<Quadrature, Real>
+class MemoryRows {
+ public:
+  MemoryRows(int m, Real hx, Real hy, std::vector<Real> lengths)
+      : m_(m), hx_(hx), hy_(hy), lengths_(std::move(lengths)) {
+    using std::exp;
+    using std::log;
+    Real lmin = std::numeric_limits<Real>::infinity(), lmax = 0;
+    for (const Real L : lengths_) {
+      lmin = std::min(lmin, L);
+      lmax = std::max(lmax, L);
+      decay_.push_back(exp(-hx / L));
+    }
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real u_max = -log(eps) + 6;  // as memory_row
+    // (B4): the step's panels, relative to X_i.
+    std::vector<Real> step{Real(0), hx / 2, hx};
+    for (Real a = 8 * lmin; a < hx / 2; a *= 2) step.push_back(a);
+    step_ = panels(std::move(step));
+    // (B5): the tail's panels, relative to X_m; 2a stays finite.
+    const Real r0 = std::max(hx, Real(m) * hx), big = std::numeric_limits<Real>::max() / 4;
+    std::vector<Real> tail{Real(0)};
+    for (Real a = std::min(lmin, r0) / 2;; a *= 2) {
+      tail.push_back(a);
+      if (!(a < u_max * lmax) || a > big) break;
+    }
+    tail_ = panels(std::move(tail));
+    step_weight_ = weights(step_);
+    tail_weight_ = weights(tail_);
+    grading_ = 8 * lmin;
+  }
+
+  std::vector<std::vector<Real>> operator()(Real y) const {
+    using std::abs;
+    using std::ceil;
+    using std::log;
+    const std::size_t nt = lengths_.size(), width = static_cast<std::size_t>(2 * m_ + 1);
+    std::vector<std::vector<Real>> out(nt, std::vector<Real>(width));
+    const Real hx = hx_, hy = hy_;
+    const auto ke = [&](Real s) { return rectangle_influence(s, y, hx, hy); };
+    // The kinks' grading depth, as memory_row.
+    int depth = 0;
+    if (abs(y) < hy / 2) {
+      depth = std::numeric_limits<Real>::digits;
+    } else {
+      const Real gap = abs(y) - hy / 2;
+      if (gap < hx)
+        depth = static_cast<int>(std::ceil(static_cast<double>(log(hx / gap) / log(Real(2))))) + 2;
+    }
+    std::vector<Real> values(std::max(step_.node.size(), tail_.node.size())), sums(nt);
+    // sums[t] = sum over the nodes of weight[t][q] K_e(origin + node[q]).
+    const auto combine = [&](const Panels& p, const std::vector<Real>& weight, Real origin) {
+      const std::size_t nn = p.node.size();
+      for (std::size_t q = 0; q < nn; ++q) values[q] = ke(origin + p.node[q]);
+      for (std::size_t t = 0; t < nt; ++t) {
+        const Real* w = weight.data() + t * nn;
+        Real s = 0;
+        for (std::size_t q = 0; q < nn; ++q) s += w[q] * values[q];
+        sums[t] = s;
+      }
+    };
+    const Real x_max = Real(m_) * hx;
+    combine(tail_, tail_weight_, x_max);
+    for (std::size_t t = 0; t < nt; ++t) out[t][width - 1] = sums[t];
+    for (int i = m_ - 1; i >= -m_; --i) {
+      const Real x0 = Real(i) * hx, x1 = x0 + hx;
+      bool kinked = false;
+      for (const Real e : {-hx / 2, hx / 2}) kinked = kinked || (depth > 0 && e > x0 && e < x1);
+      if (kinked)
+        kinked_step(x0, x1, depth, ke, sums);
+      else
+        combine(step_, step_weight_, x0);
+      const std::size_t k = static_cast<std::size_t>(i + m_);
+      for (std::size_t t = 0; t < nt; ++t) out[t][k] = decay_[t] * out[t][k + 1] + sums[t];
+    }
+    return out;
+  }
+
+ private:
+  /// Gauss nodes (offsets from the panels' origin) and weights (the rule's times the half width).
+  struct Panels {
+    std::vector<Real> node, weight;
+  };
+
+  static Panels panels(std::vector<Real> points) {
+    std::sort(points.begin(), points.end());
+    const auto& gx = Quadrature::nodes();
+    const auto& gw = Quadrature::weights();
+    Panels p;
+    for (std::size_t k = 1; k < points.size(); ++k) {
+      if (!(points[k] > points[k - 1])) continue;
+      const Real half = (points[k] - points[k - 1]) / 2, mid = (points[k] + points[k - 1]) / 2;
+      for (std::size_t q = 0; q < static_cast<std::size_t>(Quadrature::points); ++q) {
+        p.node.push_back(mid + half * Real(gx[q]));
+        p.weight.push_back(Real(gw[q]) * half);
+      }
+    }
+    return p;
+  }
+
+  /// Every length's weights of the nodes, length-major: w_q e^(-s_q/L)/L (0 where it underflows).
+  std::vector<Real> weights(const Panels& p) const {
+    using std::exp;
+    std::vector<Real> w;
+    w.reserve(lengths_.size() * p.node.size());
+    for (const Real L : lengths_)
+      for (std::size_t q = 0; q < p.node.size(); ++q)
+        w.push_back(p.weight[q] * (exp(-p.node[q] / L) / L));
+    return w;
+  }
+
+  /// A step containing a kink e = +-hx/2 (B4): memory_row's breakpoints there (e +- (hx/2)
+  /// 2^(-k), k = 1 .. depth, in the caller's coordinates as memory_row places them) with the
+  /// shared ones, every length's weight evaluated at the nodes.
+  template <class Ke>
+  void kinked_step(Real x0, Real x1, int depth, const Ke& ke, std::vector<Real>& sums) const {
+    using std::exp;
+    const Real hx = hx_;
+    std::vector<Real> points{x0, x1, x0 + hx / 2};
+    for (Real a = grading_; a < hx / 2; a *= 2) points.push_back(x0 + a);
+    for (const Real e : {-hx / 2, hx / 2}) {
+      if (!(e > x0 && e < x1)) continue;
+      for (int k = 1; k <= depth; ++k) {
+        const Real off = (hx / 2) * std::ldexp(Real(1), -k);
+        for (const Real p : {e - off, e + off})
+          if (p > x0 && p < x1) points.push_back(p);
+      }
+    }
+    std::sort(points.begin(), points.end());
+    const auto& gx = Quadrature::nodes();
+    const auto& gw = Quadrature::weights();
+    std::fill(sums.begin(), sums.end(), Real(0));
+    for (std::size_t k = 1; k < points.size(); ++k) {
+      if (!(points[k] > points[k - 1])) continue;
+      const Real half = (points[k] - points[k - 1]) / 2, mid = (points[k] + points[k - 1]) / 2;
+      for (std::size_t q = 0; q < static_cast<std::size_t>(Quadrature::points); ++q) {
+        const Real x = mid + half * Real(gx[q]);
+        const Real v = Real(gw[q]) * half * ke(x);
+        for (std::size_t t = 0; t < lengths_.size(); ++t) {
+          const Real L = lengths_[t];
+          sums[t] += v * (exp(-(x - x0) / L) / L);
+        }
+      }
+    }
+  }
+
+  int m_;
+  Real hx_, hy_;
+  std::vector<Real> lengths_, decay_;
+  Panels step_, tail_;
+  std::vector<Real> step_weight_, tail_weight_;
+  Real grading_ = 0;
+};
+
 }  // namespace bem
 }  // namespace viscoroll

@@ -16,11 +16,21 @@
 // solved again to the tolerance, and the iteration stops only when that tight solve leaves A
 // unchanged. The stopping test is the exact one, so the result is that of the exact iteration to
 // the tolerance; the early sets, far from the final one, cost fewer GMRES steps.
+// A final solve: GMRES' relative residual bounds p only to about cond(AS1) times it, and two
+// iterations that reach the same final set from different iterates (coarse early solves or not)
+// differ by that much. With a final tolerance set, the set that a solve leaves unchanged (a tight
+// one, or a coarse one directly) is solved once more to it from there, and the iteration stops
+// when that solve leaves the set unchanged: both then give the solution of the final set to the
+// final tolerance's effect. The final solve runs one GMRES cycle at a time while each cycle at
+// least halves the residual; should it stall above the final tolerance (GMRES' attainable
+// residual being above it), the solve counts if it reached the tolerance, and otherwise the set is
+// solved again to the tolerance without a final solve.
 #pragma once
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -61,6 +71,9 @@ struct ActiveSetSettings {
   /// GMRES' relative residual while A changes (see above); 0 or <= tolerance: every solve to the
   /// tolerance.
   Real coarse_tolerance = 0;
+  /// GMRES' relative residual of the final solve of the set that no longer changes (see above); 0
+  /// or >= tolerance: none, the last solve to the tolerance.
+  Real final_tolerance = 0;
 };
 
 /// The iterate: on entry the starting guess, on exit the last iterate.
@@ -95,6 +108,8 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
   std::set<std::vector<std::size_t>> seen;
   ActiveSetReport report;
   bool coarse = settings.coarse_tolerance > settings.tolerance;
+  bool polish = settings.final_tolerance > 0 && settings.final_tolerance < settings.tolerance;
+  bool last = false;  // this solve is the final one, to final_tolerance
   for (; report.iterations < settings.max_iterations; ++report.iterations) {
     cells.clear();
     for (std::size_t q = 0; q < n; ++q)
@@ -142,14 +157,41 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
     }
     b[na] = load.scale;
     x[na] = state.d;
-    const Real tolerance = coarse ? settings.coarse_tolerance : settings.tolerance;
-    const auto rep = gmres<Real>(apply_a, apply_m, b, x, tolerance, settings.restart,
-                                 settings.max_krylov_iterations - report.krylov_iterations);
+    const Real tolerance = last     ? settings.final_tolerance
+                           : coarse ? settings.coarse_tolerance
+                                    : settings.tolerance;
+    const int budget = settings.max_krylov_iterations - report.krylov_iterations;
+    GmresReport rep;
+    if (!last) {
+      rep = gmres<Real>(apply_a, apply_m, b, x, tolerance, settings.restart, budget);
+    } else {
+      // The final solve, one GMRES cycle at a time while each at least halves the residual: it
+      // stops where rounding stalls GMRES above the final tolerance.
+      double before = std::numeric_limits<double>::infinity();
+      while (true) {
+        const auto cycle = gmres<Real>(apply_a, apply_m, b, x, tolerance, settings.restart,
+                                       std::min(settings.restart, budget - rep.iterations));
+        rep.iterations += cycle.iterations;
+        rep.converged = cycle.converged;
+        rep.relative_residual = cycle.relative_residual;
+        if (rep.converged || rep.iterations >= budget || !(rep.relative_residual < before / 2))
+          break;
+        before = rep.relative_residual;
+      }
+    }
     report.krylov_iterations += rep.iterations;
     std::fill(p.begin(), p.end(), Real(0));
     for (Eigen::Index k = 0; k < na; ++k) p[cell(k)] = x[k];
     state.d = x[na];
-    if (!rep.converged) {
+    if (!rep.converged && last &&
+        !(rep.relative_residual <= static_cast<double>(settings.tolerance))) {
+      // The final tolerance out of reach, and the tolerance not met: solve the set again to it,
+      // from here, with no final solve.
+      last = polish = false;
+      seen.erase(cells);
+      continue;
+    }
+    if (!rep.converged && !last) {
       // format_value, not std::to_string: "%f" printed a residual of 3e-7 as 0.000000.
       report.reason = "GMRES did not converge (relative residual " +
                       detail::format_value(rep.relative_residual) + ")";
@@ -167,11 +209,20 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
       active[q] = now;
     }
     if (!changed && coarse) {
-      // The set of a coarse solve: solve it again to the tolerance.
+      // The set of a coarse solve: solve it again to the tolerance, or to the final one.
       coarse = false;
+      last = polish;
       seen.erase(cells);
       continue;
     }
+    if (!changed && polish && !last) {
+      // The set of a tight solve: solve it again to the final tolerance.
+      last = true;
+      seen.erase(cells);
+      continue;
+    }
+    // A final solve that changed the set: the next sets to the tolerance, then a final solve.
+    if (changed) last = false;
     if (!changed) {
       report.converged = true;
       report.reason = "converged";
