@@ -114,9 +114,11 @@ BENCHMARK(BM_line_solve_difference_jacobian)
 BENCHMARK(BM_line_solve_tolerance)
     ->Args({3, 1000, 0})
     ->Args({3, 1000, 8})
-    ->Args({3, 1000, 6})
+    ->Args({3, 1000, 4})
     ->Args({6, 1000, 0})
     ->Args({6, 1000, 8})
+    ->Args({5, 1000, 0})
+    ->Args({5, 1000, 4})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_solve_fast)->Arg(10)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_sweep)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -1,9 +1,10 @@
-// LineOptions::fast() (5 terms, integrals to 1e-8): within 1% of the converged least-squares
+// LineOptions::fast() (5 terms, integrals to 1e-4): within 1% of the converged least-squares
 // solution (basis s, oversampling 2, 24 terms, 1000 iterations; docs/performance.md, "The fast
 // setting") in a(0), b(0) (relative to a(0)), l, d and chi at six speeds of the paper's scene,
 // among them V tau/a0 = 0.231, where the fast setting's l is 0.86% off (the largest of its errors
-// over the 100 speeds). And quadrature_tolerance: 1e-8 moves the solution at N = 5 by far less than
-// 1% (measured 1e-9 ... 1e-7), and a tolerance outside [0, 1e-6] is an error naming it.
+// over the 100 speeds). And quadrature_tolerance: 1e-4 moves the solution at N = 5 by far less than
+// the discretisation's 1% (measured at most 6e-8: the panels' error bound is pessimistic), and a
+// tolerance outside [0, 1e-4] is an error naming it.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -44,21 +45,22 @@ TEST_CASE("line fast setting: the quadrature tolerance and its range", "[line]")
   viscoroll::LineOptions exact;
   exact.terms = 5;
   viscoroll::LineOptions loose = exact;
-  loose.quadrature_tolerance = 1e-8;
+  loose.quadrature_tolerance = 1e-4;
   for (const double vtau : {0.01, 1.0, 100.0}) {
     const auto a = viscoroll::LineSolverD(paper.material, exact).solve(paper.scene(vtau));
     const auto b = viscoroll::LineSolverD(paper.material, loose).solve(paper.scene(vtau));
     INFO("V tau/a0 = " << vtau);
     REQUIRE(a.converged);
     REQUIRE(b.converged);
-    // The integrals' error (1e-8) times the Jacobian's condition: well below the discretisation's.
-    CHECK(std::abs(b.a(0) / a.a(0) - 1) < 1e-5);
-    CHECK(std::abs(b.l() / a.l() - 1) < 1e-5);
-    CHECK(std::abs(b.d / a.d - 1) < 1e-5);
-    CHECK(std::abs(b.chi / a.chi - 1) < 1e-5);
+    // Bound: the tolerance itself (the Jacobian's condition times the integrals' actual error,
+    // measured 1e-7 at most); the discretisation's error is 1e-2.
+    CHECK(std::abs(b.a(0) / a.a(0) - 1) < 1e-4);
+    CHECK(std::abs(b.l() / a.l() - 1) < 1e-4);
+    CHECK(std::abs(b.d / a.d - 1) < 1e-4);
+    CHECK(std::abs(b.chi / a.chi - 1) < 1e-4);
   }
   viscoroll::LineOptions bad;
-  bad.quadrature_tolerance = 1e-3;
+  bad.quadrature_tolerance = 1e-3;  // beyond the panels' analysis (docs/theory.md section 7)
   CHECK_THROWS_AS(viscoroll::LineSolverD(paper.material, bad), std::invalid_argument);
   bad.quadrature_tolerance = -1;
   CHECK_THROWS_AS(viscoroll::LineSolverD(paper.material, bad), std::invalid_argument);

@@ -171,7 +171,7 @@ void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real le
 /// s = +-i h (h > 0) at Re w < 0, pi/2 < |Im w| < pi, and one at s < 0 or s > length at
 /// |Im w| = pi; so the panels are strip_panel_width(pi/2) wide for w < 2 and
 /// strip_panel_width(pi) beyond, where the points s = +-i h, for every h, keep the rho the width
-/// asks for (computed for n = 2 to 64 and epsilon from float's to 2^-167: at least 1.06 times it;
+/// asks for (computed for n = 2 to 64 and epsilon from 1e-4 to 2^-167: at least 1.06 times it;
 /// docs/theory.md section 7), to the relative accuracy of strip_panel_width's `tolerance`.
 /// Requires 0 < first, 0 < last and first + last < length; appends (node, weight) pairs.
 template <class Quadrature, class Real>
