@@ -4,6 +4,10 @@
 //                       docs/line-solver.md) at V tau/a0 = s/1000, with `terms` = N;
 //   BM_line_solve_difference_jacobian/N/s:  the same with the forward-difference Jacobian
 //                       (LineJacobian::difference), the solver before the semi-analytic one;
+//   BM_line_solve_tolerance/N/s/k: a cold solve as BM_line_solve with
+//                       LineOptions::quadrature_tolerance = 10^-k (k = 0: the default, eps);
+//   BM_line_solve_fast/s: a cold solve with LineOptions::fast() (docs/performance.md, "The fast
+//                       setting") at V tau/a0 = s/1000;
 //   BM_line_sweep/N:    the figures' sweep (examples/panek_kalker): 101 speeds V tau/a0 = 10^-3 ...
 //                       10^3, evenly spaced in log, each seeded with the last converged solution.
 // Counters: iterations, converged (1/0) and, for the sweep, the speeds that did not converge (the
@@ -23,11 +27,7 @@ viscoroll::LineScene<double> paper_scene(double vtau) {
   return {.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = load, .speed = vtau};
 }
 
-void solve_once(benchmark::State& state, viscoroll::LineJacobian jacobian) {
-  viscoroll::LineOptions options;
-  options.terms = static_cast<int>(state.range(0));
-  options.jacobian = jacobian;
-  const double vtau = static_cast<double>(state.range(1)) / 1000;
+void solve_with(benchmark::State& state, const viscoroll::LineOptions& options, double vtau) {
   const viscoroll::LineSolverD solver(kRubber, options);
   viscoroll::LineSolverD::Solution s;
   for (auto _ : state) {
@@ -39,12 +39,30 @@ void solve_once(benchmark::State& state, viscoroll::LineJacobian jacobian) {
   state.counters["converged"] = s.converged ? 1 : 0;
 }
 
+void solve_once(benchmark::State& state, viscoroll::LineJacobian jacobian) {
+  viscoroll::LineOptions options;
+  options.terms = static_cast<int>(state.range(0));
+  options.jacobian = jacobian;
+  solve_with(state, options, static_cast<double>(state.range(1)) / 1000);
+}
+
 void BM_line_solve(benchmark::State& state) {
   solve_once(state, viscoroll::LineJacobian::analytic);
 }
 
 void BM_line_solve_difference_jacobian(benchmark::State& state) {
   solve_once(state, viscoroll::LineJacobian::difference);
+}
+
+void BM_line_solve_tolerance(benchmark::State& state) {
+  viscoroll::LineOptions options;
+  options.terms = static_cast<int>(state.range(0));
+  options.quadrature_tolerance = state.range(2) == 0 ? 0.0 : std::pow(10.0, -state.range(2));
+  solve_with(state, options, static_cast<double>(state.range(1)) / 1000);
+}
+
+void BM_line_solve_fast(benchmark::State& state) {
+  solve_with(state, viscoroll::LineOptions::fast(), static_cast<double>(state.range(0)) / 1000);
 }
 
 void BM_line_sweep(benchmark::State& state) {
@@ -78,6 +96,7 @@ void BM_line_sweep(benchmark::State& state) {
 BENCHMARK(BM_line_solve)
     ->Args({2, 1000})
     ->Args({3, 1000})
+    ->Args({6, 1000})
     ->Args({4, 100})
     ->Args({4, 1000})
     ->Args({4, 10000})
@@ -92,4 +111,14 @@ BENCHMARK(BM_line_solve_difference_jacobian)
     ->Args({8, 1000})
     ->Args({16, 1000})
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_solve_tolerance)
+    ->Args({3, 1000, 0})
+    ->Args({3, 1000, 8})
+    ->Args({3, 1000, 4})
+    ->Args({6, 1000, 0})
+    ->Args({6, 1000, 8})
+    ->Args({5, 1000, 0})
+    ->Args({5, 1000, 4})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_solve_fast)->Arg(10)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_sweep)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);

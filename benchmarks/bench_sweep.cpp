@@ -4,6 +4,8 @@
 //   chunks of `chunk` speeds (each chunk from a cold start, then continuation) on `threads`
 //   threads. Wall time (UseRealTime), so the thread count shows. Counter not_converged: speeds
 //   that did not converge (their time counts).
+//   BM_sweep_line_fast/chunk/threads: the same with LineOptions::fast() (docs/performance.md, "The
+//   fast setting").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -15,9 +17,8 @@ namespace {
 
 const viscoroll::StandardLinearSolid<double> kRubber(1, 0.5, 9, 1);  // tau = 1: speed = V tau
 
-void BM_sweep_line(benchmark::State& state) {
-  viscoroll::LineOptions options;
-  options.terms = static_cast<int>(state.range(0));
+void run_sweep(benchmark::State& state, const viscoroll::LineOptions& options, std::size_t chunk,
+               unsigned threads) {
   const viscoroll::LineSolverD solver(kRubber, options);
   const double load = 5.0 / (3 * (1 + 9) * kRubber.instantaneous_compliance());  // a0 = 1
   const viscoroll::LineScene<double> scene{
@@ -25,8 +26,8 @@ void BM_sweep_line(benchmark::State& state) {
   std::vector<double> speeds;
   for (int i = 0; i < 100; ++i) speeds.push_back(std::pow(10.0, -3 + 6.0 * i / 99));
   viscoroll::SweepOptions sweep_options;
-  sweep_options.chunk = static_cast<std::size_t>(state.range(1));
-  sweep_options.threads = static_cast<unsigned>(state.range(2));
+  sweep_options.chunk = chunk;
+  sweep_options.threads = threads;
   int failures = 0;
   for (auto _ : state) {
     const auto results = viscoroll::sweep(solver, scene, speeds, sweep_options);
@@ -37,6 +38,18 @@ void BM_sweep_line(benchmark::State& state) {
   state.counters["not_converged"] = failures;
 }
 
+void BM_sweep_line(benchmark::State& state) {
+  viscoroll::LineOptions options;
+  options.terms = static_cast<int>(state.range(0));
+  run_sweep(state, options, static_cast<std::size_t>(state.range(1)),
+            static_cast<unsigned>(state.range(2)));
+}
+
+void BM_sweep_line_fast(benchmark::State& state) {
+  run_sweep(state, viscoroll::LineOptions::fast(), static_cast<std::size_t>(state.range(0)),
+            static_cast<unsigned>(state.range(1)));
+}
+
 }  // namespace
 
 BENCHMARK(BM_sweep_line)
@@ -45,6 +58,13 @@ BENCHMARK(BM_sweep_line)
     ->Args({3, 25, 2})
     ->Args({6, 100, 1})
     ->Args({6, 25, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK(BM_sweep_line_fast)
+    ->Args({100, 1})
+    ->Args({50, 2})
+    ->Args({25, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(3);

@@ -7,9 +7,11 @@
 //   - in s, equal panels in w = ln(s/(len - s)) between a first panel on the kernels' scale x0 and
 //     a last one on the scale of the nearest pole of G beyond the end (where I0(alpha) = 0, Eq.
 //     (37), just beyond +-l when a0/V tau is large; docs/line-operators.md);
-//   - in t, equal panels in ln(1 + t/c), c = min(x0/V tau, 1), up to -ln(eps) + 8.
+//   - in t, equal panels in ln(1 + t/c), c = min(x0/V tau, 1), up to -ln(tol) + 8.
 // The panels' width follows from the distance of the singularities in these variables (pi/2) and
-// the rule's order, so that every integral is exact to rounding (detail/graded_panels.hpp).
+// the rule's order, so that every integral is exact to the relative accuracy tol: rounding by
+// default (tol = eps), or a stated tolerance (LineOptions::quadrature_tolerance;
+// detail/graded_panels.hpp).
 #pragma once
 
 #include <algorithm>
@@ -36,18 +38,29 @@ template <RealScalar Real, class Quadrature>
 requires NodalQuadratureRule<Quadrature, Real>
 class LineNodeRule {
  public:
-  LineNodeRule(LineBasis basis, Real scale, int terms, Real vtau, Real f)
-      : basis_(basis), scale_(scale), n_(terms), vtau_(vtau), f_(f) {
+  /// tolerance: the relative accuracy of every integral, tol = max(tolerance, eps) (0, the
+  /// default: the scalar's epsilon, every integral exact to rounding).
+  LineNodeRule(LineBasis basis, Real scale, int terms, Real vtau, Real f, Real tolerance = Real(0))
+      : basis_(basis),
+        scale_(scale),
+        n_(terms),
+        vtau_(vtau),
+        f_(f),
+        tolerance_(detail::quadrature_tolerance(tolerance)) {
     using std::log;
-    t_max_ = -log(std::numeric_limits<Real>::epsilon()) + 8;
+    t_max_ = -log(tolerance_) + 8;
   }
+
+  /// The relative accuracy the node sets are built for (at least the scalar's epsilon).
+  Real tolerance() const { return tolerance_; }
 
   void point(const LineShape<Real>& s, Real y, Real x0, LineNodes<Real>& nd) const {
     nd.d1 = s.l - y;
     nd.d2 = s.l + y;
+    nd.tolerance = tolerance_;
     const Real c = std::min(Real(x0 / vtau_), Real(1));
-    detail::append_log_mapped_nodes<Quadrature>(nd.tn, nd.tw, t_max_, c,
-                                                boost::math::constants::half_pi<Real>());
+    detail::append_log_mapped_nodes<Quadrature>(
+        nd.tn, nd.tw, t_max_, c, boost::math::constants::half_pi<Real>(), tolerance_);
     std::vector<Real> sn, sw;
     for (int side = 0; side < 2; ++side) {
       sn.clear();
@@ -83,7 +96,8 @@ class LineNodeRule {
     const Real first = std::min({Real(x0 / 2), Real(len / 4), behind});
     const Real series = series_scale(s);
     const Real last = std::min({end_width(s, len), Real(len / 5), series});
-    detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_);
+    detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_,
+                                                  tolerance_);
   }
 
   /// The distance from an end over which the Chebyshev series of a(y), b(y) vary: where the
@@ -122,7 +136,8 @@ class LineNodeRule {
   Real scale_;  ///< e of LineBasis::s_mapped, else 0
   int n_;
   Real vtau_, f_;
-  Real t_max_;  ///< the end of the t-range, -ln(eps) + 8 (e^-t below eps e^-8 beyond)
+  Real tolerance_;  ///< tol, at least eps
+  Real t_max_;      ///< the end of the t-range, -ln(tol) + 8 (e^-t below tol e^-8 beyond)
 };
 
 }  // namespace viscoroll

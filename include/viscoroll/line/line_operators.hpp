@@ -43,6 +43,8 @@ namespace viscoroll {
 ///   - `tn`, `tw`: the nodes t of the memory integral over [0, inf) of (L6) and their weights
 ///     (without e^-t); empty where no memory integral is taken.
 ///   - `d1`, `d2`: l - y and l + y, the distances to the ends.
+///   - `tolerance`: the relative accuracy the nodes were built for (0: the scalar's epsilon);
+///     exterior_right's far-field series keeps to it.
 ///   - `add_side(y, sign, s, w)`: appends the nodes y' = y + sign s_j (sign = +1 or -1) with the
 ///     weights w_j.
 template <RealScalar Real>
@@ -50,6 +52,7 @@ struct LineNodes {
   std::vector<Real> yp, dist, weight;
   std::vector<Real> tn, tw;
   Real d1 = 0, d2 = 0;
+  Real tolerance = 0;
 
   void add_side(Real y, int sign, const std::vector<Real>& s, const std::vector<Real>& w) {
     for (std::size_t j = 0; j < s.size(); ++j) {
@@ -170,7 +173,7 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
   }
   if (slopes != nullptr) slopes->weight.resize(dq.size());
   // s-nodes beyond far.threshold() take the series in 1/s^2 instead of the t-nodes.
-  const detail::MemoryKernelSeries<Real> far(x0, v);
+  const detail::MemoryKernelSeries<Real> far(x0, v, nd.tolerance);
   Real s1 = 0, s2 = 0, s_x0 = 0, s_l = 0;
   for (std::size_t j = 0; j < nd.dist.size(); ++j) {
     const Real w = nd.weight[j];

@@ -82,8 +82,10 @@ class LineResidual {
   /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b.
   /// oversampling k >= 1: k (N + 1) points instead, an overdetermined system whose least-squares
   /// solution is the paper's (Section 7; docs/theory.md section 10).
+  /// quadrature_tolerance: the relative accuracy of every integral (LineNodeRule); 0, the default,
+  /// the scalar's epsilon (every integral exact to rounding).
   LineResidual(LineProblem<Real> problem, int terms, LineBasis basis = LineBasis::t_squared,
-               int oversampling = 1)
+               int oversampling = 1, Real quadrature_tolerance = Real(0))
       : p_(problem),
         n_(terms),
         oversampling_(oversampling),
@@ -91,7 +93,7 @@ class LineResidual {
         scale_(basis == LineBasis::s_mapped
                    ? LineShape<Real>::mapped_scale(problem.vtau, problem.f, problem.a_ref)
                    : Real(0)),
-        rule_(basis_, scale_, terms, problem.vtau, problem.f) {
+        rule_(basis_, scale_, terms, problem.vtau, problem.f, quadrature_tolerance) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,
                     "1 <= oversampling <= 8");

@@ -97,6 +97,23 @@ struct LineOptions {
   /// least-squares solution, Section 7; docs/line-solver.md, "Least-squares minima"). Needs the
   /// semi-analytic Jacobian; otherwise such a stop is reported not converged.
   bool least_squares = true;
+  /// The relative accuracy of the residual's integrals (LineNodeRule, docs/theory.md section 7),
+  /// at most 1e-4: 0, the default, the scalar's epsilon (every integral exact to rounding); a
+  /// larger tolerance builds fewer quadrature nodes (a cheaper residual). The bound is
+  /// pessimistic: on the paper's scene 1e-8 moved the solution by at most 1e-12 and 1e-4 by at
+  /// most 6e-8 (docs/performance.md, "The fast setting").
+  double quadrature_tolerance = 0;
+
+  /// The fast setting: the smallest discretisation measured within 1% of the converged
+  /// least-squares solution (oversampled, 24 terms in s) in a(0), l, d, chi and b(0) (the last
+  /// relative to a(0)) at 100 speeds V tau/a0 = 1e-3 ... 1e3 of the paper's scene
+  /// (docs/performance.md, "The fast setting"): 5 terms, integrals to 1e-4.
+  static LineOptions fast() {
+    LineOptions options;
+    options.terms = 5;
+    options.quadrature_tolerance = 1e-4;
+    return options;
+  }
 
   void validate() const {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
@@ -104,6 +121,9 @@ struct LineOptions {
                     "1 <= oversampling <= 8");
     detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations",
                     max_iterations, "1 <= max_iterations <= 100000");
+    detail::require(quadrature_tolerance >= 0 && quadrature_tolerance <= 1e-4,
+                    "quadrature_tolerance", quadrature_tolerance,
+                    "0 <= quadrature_tolerance <= 1e-4 (0: the scalar's epsilon)");
   }
 };
 
@@ -146,7 +166,7 @@ class LineSolver {
     return LineResidual<Real, Quadrature>(
         problem(Units{scene.c1, scene.c2, 0, 0}, slow, memory.f, scene.speed * memory.tau),
         options_.terms, options_.basis,
-        options_.oversampling);
+        options_.oversampling, Real(options_.quadrature_tolerance));
   }
 
  private:
@@ -334,7 +354,7 @@ class LineSolver {
     int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
       const LineResidual<Real, Quadrature> res(prob, stages[k], options_.basis,
-                                               options_.oversampling);
+                                               options_.oversampling, Real(options_.quadrature_tolerance));
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
@@ -426,7 +446,7 @@ class LineSolver {
     }
     return failure(u, slow, c, f, vtau,
                    LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
-                                                  options_.oversampling),
+                                                  options_.oversampling, Real(options_.quadrature_tolerance)),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 

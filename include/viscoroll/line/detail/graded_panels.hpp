@@ -120,34 +120,43 @@ void append_graded_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length
                         [&](Real lo, Real hi) { append_panel<Quadrature>(s, w, lo, hi); });
 }
 
+/// The relative accuracy a node set is built for: `tolerance`, or the scalar's epsilon where
+/// tolerance is 0 (the default of every rule below) or below it.
+template <class Real>
+Real quadrature_tolerance(Real tolerance) {
+  return std::max(tolerance, std::numeric_limits<Real>::epsilon());
+}
+
 /// The widest panel, in a variable w in which the integrand is analytic in the strip
 /// |Im w| < strip, on which the Quadrature's n-point rule (exact to degree 2n - 1, Gauss-Legendre)
-/// has the error bound rho^(-2n) <= eps/4096 of the Bernstein ellipse through the worst-placed
+/// has the error bound rho^(-2n) <= tol/4096 of the Bernstein ellipse through the worst-placed
 /// singularity (at distance `strip` above the panel's centre): with half-width h,
-/// rho = d/h + sqrt(1 + (d/h)^2) = exp(asinh(d/h)), so 2 n asinh(strip/h) >= ln(4096/eps) (Davis &
+/// rho = d/h + sqrt(1 + (d/h)^2) = exp(asinh(d/h)), so 2 n asinh(strip/h) >= ln(4096/tol) (Davis &
 /// Rabinowitz, Methods of Numerical Integration, 4.6; the factor 4096 covers the constant of the
-/// bound for a pole on the ellipse, docs/theory.md section 7).
+/// bound for a pole on the ellipse, docs/theory.md section 7). tol = quadrature_tolerance(tolerance):
+/// the scalar's epsilon by default.
 template <class Quadrature, class Real>
-Real strip_panel_width(Real strip) {
+Real strip_panel_width(Real strip, Real tolerance = Real(0)) {
   using std::log;
   using std::sinh;
-  const Real digits = log(Real(4096) / std::numeric_limits<Real>::epsilon());
+  const Real digits = log(Real(4096) / quadrature_tolerance(tolerance));
   return 2 * strip / sinh(digits / (2 * Quadrature::points));
 }
 
 /// The nodes and weights of int_0^length g(t) dt in the variable w = ln(1 + t/c) (t = c (e^w - 1),
 /// dt = c e^w dw) on equal panels no wider than strip_panel_width(strip): for an integrand analytic
 /// in w in |Im w| < strip, as g(t) = e^-t k(x0 + V t) with k singular only where x0 + V t is
-/// imaginary and c = x0/V (strip = pi/2). Appends (node, weight) pairs.
+/// imaginary and c = x0/V (strip = pi/2), to the relative accuracy of strip_panel_width's
+/// `tolerance`. Appends (node, weight) pairs.
 template <class Quadrature, class Real>
 void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real length, Real c,
-                             Real strip) {
+                             Real strip, Real tolerance = Real(0)) {
   using std::exp;
   using std::expm1;
   using std::log1p;
   if (!(length > 0)) return;
   for_each_equal_panel_node<Quadrature>(Real(0), Real(log1p(length / c)),
-                                        strip_panel_width<Quadrature>(strip),
+                                        strip_panel_width<Quadrature>(strip, tolerance),
                                         [&](Real v, Real weight) {
                                           t.push_back(c * expm1(v));
                                           w.push_back(weight * c * exp(v));
@@ -162,12 +171,12 @@ void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real le
 /// s = +-i h (h > 0) at Re w < 0, pi/2 < |Im w| < pi, and one at s < 0 or s > length at
 /// |Im w| = pi; so the panels are strip_panel_width(pi/2) wide for w < 2 and
 /// strip_panel_width(pi) beyond, where the points s = +-i h, for every h, keep the rho the width
-/// asks for (computed for n = 2 to 64 and epsilon from float's to 2^-167: at least 1.06 times it;
-/// docs/theory.md section 7). Requires 0 < first, 0 < last and first + last < length; appends
-/// (node, weight) pairs.
+/// asks for (computed for n = 2 to 64 and epsilon from 1e-4 to 2^-167: at least 1.06 times it;
+/// docs/theory.md section 7), to the relative accuracy of strip_panel_width's `tolerance`.
+/// Requires 0 < first, 0 < last and first + last < length; appends (node, weight) pairs.
 template <class Quadrature, class Real>
 void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real length, Real first,
-                               Real last, Real max_width) {
+                               Real last, Real max_width, Real tolerance = Real(0)) {
   using std::exp;
   using std::log;
   const auto mapped = [&](Real lo, Real hi, Real width) {
@@ -184,8 +193,8 @@ void append_logit_mapped_nodes(std::vector<Real>& s, std::vector<Real>& w, Real 
   const Real lo = log(first / (length - first)), hi = log((length - last) / last);
   const Real pi = boost::math::constants::pi<Real>();
   const Real split = std::min(std::max(lo, Real(2)), hi);
-  mapped(lo, split, strip_panel_width<Quadrature>(pi / 2));
-  mapped(split, hi, strip_panel_width<Quadrature>(pi));
+  mapped(lo, split, strip_panel_width<Quadrature>(pi / 2, tolerance));
+  mapped(split, hi, strip_panel_width<Quadrature>(pi, tolerance));
   // The last panel in s = length - last tau^2, tau in [0, 1] (ds = 2 last tau dtau): an integrand
   // with a branch point (length - s)^(k/2) at the end (a(y) in the variable sqrt(1 - t^2),
   // line_shape.hpp) is analytic in tau.

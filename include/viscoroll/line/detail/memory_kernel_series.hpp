@@ -15,7 +15,8 @@
 // (1 + u)^(-3/2) is completely monotone on u >= 0, so its Taylor remainder after M terms lies
 // between 0 and the next term for every u >= 0 (not only u < 1): |K - K_M| <= |c_M| m_{2M+1}
 // s^(-2M-3) at every s, with no condition on the t-range. With K >= (m_1 - (3/2) m_3/s^2)/s^3 (the
-// remainder after two terms), the relative error is below eps/16 wherever
+// remainder after two terms), the relative error is below eps/16 (or tol/16 for a stated
+// tolerance tol > eps) wherever
 //   |c_M| e_{2M+1} z^M <= (eps/32) e_1   and   (3/2) e_3 z <= e_1/2,
 // i.e. for s >= threshold(). Below it the caller sums the t-nodes.
 #pragma once
@@ -33,7 +34,8 @@ class MemoryKernelSeries {
   /// Terms of the series: at V << x0 (alpha ~ 1, e_j ~ 1) the threshold is ~2.3 R.
   static constexpr int kTerms = 24;
 
-  MemoryKernelSeries(Real x0, Real v) : v_(v), r_(x0 + v) {
+  /// tolerance: the relative accuracy tol/16 instead of eps/16 (0, the default: eps).
+  MemoryKernelSeries(Real x0, Real v, Real tolerance = Real(0)) : v_(v), r_(x0 + v) {
     using std::abs;
     using std::pow;
     using std::sqrt;
@@ -53,7 +55,7 @@ class MemoryKernelSeries {
       slope_s_[n] = -c * Real(2 * n + 3) * e[2 * n + 1];
     }
     const Real c_next = -c * (Real(2 * kTerms + 1) / Real(2 * kTerms));
-    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real eps = std::max(tolerance, std::numeric_limits<Real>::epsilon());
     // z at which the first omitted term is eps/32 of the first, and the second half of it.
     const Real z_tail =
         pow(eps / 32 * e[1] / (abs(c_next) * e[2 * kTerms + 1]), Real(1) / Real(kTerms));
@@ -62,7 +64,8 @@ class MemoryKernelSeries {
     threshold_ = z_max > 0 ? Real(r_ / sqrt(z_max)) : std::numeric_limits<Real>::infinity();
   }
 
-  /// The smallest s at which the series is within eps/16 of K(s) (+inf if nowhere).
+  /// The smallest s at which the series is within tol/16 of K(s) (+inf if nowhere; tol = eps by
+  /// default).
   Real threshold() const { return threshold_; }
 
   /// K(s), s >= threshold().
