@@ -89,10 +89,9 @@ struct Scene {
   std::vector<double> temperatures;
 };
 
-/// The message for a prony material with the command line's line method (one relaxation time).
+/// The message for a prony material with the command line's line method (the library's LineSolver takes a spectrum; this tool does not wire it yet).
 inline std::string prony_needs_bem() {
-  return "material.model 'prony': the command line's line method takes one relaxation time (the "
-         "library's LineSolver takes a spectrum, docs/line-solver.md); use "
+  return "material.model 'prony': the line solver takes one relaxation time so far; use "
          "--method plane or --method bem";
 }
 

@@ -402,8 +402,7 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
        {"--temperature", "20"}},
       {"line",
        {},
-       "material.model 'prony': the command line's line method takes one relaxation time (the "
-       "library's LineSolver takes a spectrum, docs/line-solver.md); use "
+       "material.model 'prony': the line solver takes one relaxation time so far; use "
        "--method plane or --method bem",
        {"--method", "line"}},
   };
