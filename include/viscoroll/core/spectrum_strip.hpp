@@ -19,7 +19,9 @@
 #include <limits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/strip.hpp>
+#include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
@@ -105,6 +107,41 @@ void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
   }
 }
 
+
+/// The memory terms (f_k, tau_k) of a spectrum at one speed, sorted as the solvers for a
+/// spectrum sort them (docs/theory.md section 12, "Terms at their limits", and section 14):
+/// relaxed (V tau_k <= relaxed_below, or no speed or time), folded into the compliance; not
+/// started (strip_is_glassy at the width `width`), dropped; the others active, with
+/// lambda_k = V tau_k in the unit 2^length and f_k / (1 + relaxed) (R6b).
+template <class Real>
+struct SpectrumClasses {
+  Real relaxed = 0, glassy = 0;
+  std::vector<SpectrumTerm<Real>> active;
+};
+template <class Real, class Terms>
+SpectrumClasses<Real> classify_spectrum(const Terms& terms, Real speed, int length,
+                                        Real relaxed_below, Real width, Real creep_ratio) {
+  SpectrumClasses<Real> out;
+  const auto v = binary<Real>(speed);
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    const Real f = terms[k].f, tau = terms[k].tau;
+    if (!(f > 0)) continue;
+    if (!(speed > 0) || !(tau > 0)) {
+      out.relaxed += f;
+      continue;
+    }
+    const auto t = binary<Real>(tau);
+    const Real lambda = times_power_of_two(Real(v.m * t.m), v.e + t.e - length);
+    if (lambda <= relaxed_below)
+      out.relaxed += f;
+    else if (strip_is_glassy(lambda, creep_ratio, width))
+      out.glassy += f;
+    else
+      out.active.push_back({f, lambda});
+  }
+  for (auto& t : out.active) t.w /= 1 + out.relaxed;
+  return out;
+}
 }  // namespace detail
 
 /// Solves (S5)-(S7) at half width a > 0. Every length of `lengths` and a in one unit; the

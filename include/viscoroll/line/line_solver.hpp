@@ -559,31 +559,14 @@ class LineSolver {
         k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
     const Units u{k1.m, c2, k1.e, slow_units.length};
     const StaticLineContact<Real> slow = slow_units.contact;
-    // Classify the terms (lengths in units).
-    const auto speed = binary<Real>(scene.speed);
-    Real relaxed = 0, glassy_f = 0;
-    std::vector<detail::SpectrumTerm<Real>> active;
-    for (std::size_t k = 0; k < terms.size(); ++k) {
-      const Real f = terms[k].f, tau = terms[k].tau;
-      if (!(f > 0)) continue;
-      if (!(scene.speed > 0) || !(tau > 0)) {
-        relaxed += f;
-        continue;
-      }
-      const auto t = binary<Real>(tau);
-      const Real lambda = times_power_of_two(Real(speed.m * t.m), speed.e + t.e - u.length);
-      // Relaxed: V tau_k <= sqrt(eps) a0 moves a, b and chi/C1 by O(V tau_k) <= sqrt(eps) a0 (P6),
-      // below the line theory's own error, and keeps the strips out of the slow regime of the
-      // line equations (docs/line-solver.md), where they have no root.
-      if (lambda <= sqrt_eps * slow.a0)
-        relaxed += f;
-      else if (strip_is_glassy(lambda, creep_ratio, slow.a0))
-        glassy_f += f;
-      else
-        active.push_back({f, lambda});
-    }
-    // Relaxed terms: c -> c (1 + relaxed), the active f -> f / (1 + relaxed) (R6b).
-    for (auto& t : active) t.w /= 1 + relaxed;
+    // Classify the terms (lengths in units). Relaxed: V tau_k <= sqrt(eps) a0 moves a, b and
+    // chi/C1 by O(V tau_k) <= sqrt(eps) a0 (P6), below the line theory's own error, and keeps the
+    // strips out of the slow regime of the line equations (docs/line-solver.md), where they have
+    // no root. Relaxed terms: c -> c (1 + relaxed), the active f -> f / (1 + relaxed) (R6b).
+    auto classes = detail::classify_spectrum(terms, scene.speed, u.length, sqrt_eps * slow.a0,
+                                             slow.a0, creep_ratio);
+    const Real relaxed = classes.relaxed;
+    auto& active = classes.active;
     const auto merged = detail::merge_spectrum(std::move(active));
     const Real c_eff = c * (1 + relaxed);
     Solution sol{};

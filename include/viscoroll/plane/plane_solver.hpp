@@ -258,29 +258,12 @@ class PlaneSolver {
         binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
     const StripUnits units{a0.e, c1.e, cc.e};
     const Real a_glassy = a0.m / sqrt(1 + creep_ratio);
-    // Classify the terms at this speed (lengths in units).
-    const auto speed = binary<Real>(scene.speed);
-    Real relaxed = 0, glassy_f = 0;
-    std::vector<detail::SpectrumTerm<Real>> active;
-    for (std::size_t k = 0; k < terms.size(); ++k) {
-      const Real f = terms[k].f, tau = terms[k].tau;
-      if (!(f > 0)) continue;
-      if (!(scene.speed > 0) || !(tau > 0)) {
-        relaxed += f;
-        continue;
-      }
-      const auto t = binary<Real>(tau);
-      const Real lambda = times_power_of_two(Real(speed.m * t.m), speed.e + t.e - units.length);
-      if (lambda <= eps * a_glassy)
-        relaxed += f;
-      else if (strip_is_glassy(lambda, creep_ratio, a0.m))
-        glassy_f += f;
-      else
-        active.push_back({f, lambda});
-    }
-    // Relaxed terms folded into the compliance, c (1 + relaxed); the active f scaled by
-    // 1/(1 + relaxed) (R6b).
-    for (auto& t : active) t.w /= 1 + relaxed;
+    // Classify the terms at this speed (lengths in units); relaxed ones folded into the
+    // compliance, c (1 + relaxed), the active f scaled by 1/(1 + relaxed) (R6b).
+    auto classes = detail::classify_spectrum(terms, scene.speed, units.length, eps * a_glassy,
+                                             a0.m, creep_ratio);
+    const Real relaxed = classes.relaxed, glassy_f = classes.glassy;
+    auto& active = classes.active;
     const Real c_eff = cc.m * (1 + relaxed);
     // a0 of the problem solved: a0^2 (1 + F - F_glassy) / (1 + F).
     const Real a0_eff = a0.m * sqrt((1 + creep_ratio - glassy_f) / (1 + creep_ratio));
