@@ -121,6 +121,7 @@ struct Fftw;
     using complex = P##complex;                                                               \
     static void* malloc(std::size_t n) { return P##malloc(n); }                               \
     static void free(void* p) { P##free(p); }                                                 \
+    static void destroy(plan p) { P##destroy_plan(p); }                                       \
     static plan r2c(int n, int howmany, REAL* in, complex* out, int odist, unsigned flags) {  \
       return P##plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, odist,  \
                                   flags);                                                     \
@@ -169,19 +170,21 @@ struct FftwArray {
   T* get() const { return data.get(); }
 };
 
-/// The four plans of one (nfx, nfy, rows), made once per process and never destroyed (FFTW
-/// keeps its own cache; the few kilobytes of a plan per grid are not freed before exit).
+/// The four plans of one (nfx, nfy, rows), made once per process and destroyed at its exit (with
+/// the cache that holds them), so that a leak checker sees no plan outlive the program.
 template <class Real>
 struct FftwPlans {
   typename Fftw<Real>::plan rows_forward, columns_forward, columns_inverse, rows_inverse;
 
   static const FftwPlans& get(int nfx, int nfy, int rows) {
     using F = Fftw<Real>;
-    static std::map<std::tuple<int, int, int>, FftwPlans> cache;
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    // The mutex before the cache: statics die in reverse order, so ~Cache still has its mutex.
+    std::mutex& mutex = fftw_planner_mutex();
+    static Cache cache;
+    const std::lock_guard<std::mutex> lock(mutex);
     const auto key = std::make_tuple(nfx, nfy, rows);
-    const auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
+    const auto it = cache.plans.find(key);
+    if (it != cache.plans.end()) return it->second;
     const int nfxh = nfx / 2 + 1;
     // FFTW_ESTIMATE: a plan in microseconds, without trial runs that would cost more than a
     // solve on a new grid; the arrays are only for the plans' alignment and strides.
@@ -195,10 +198,30 @@ struct FftwPlans {
     p.columns_inverse = F::columns(nfy, nfxh, spec.get(), FFTW_BACKWARD, flags);
     p.rows_inverse = F::c2r(nfx, rows, spec.get(), real.get(), nfxh, flags);
     if (p.rows_forward == nullptr || p.columns_forward == nullptr || p.columns_inverse == nullptr ||
-        p.rows_inverse == nullptr)
+        p.rows_inverse == nullptr) {
+      p.destroy();
       throw std::bad_alloc();
-    return cache.emplace(key, p).first->second;
+    }
+    return cache.plans.emplace(key, p).first->second;
   }
+
+ private:
+  void destroy() const {
+    for (const auto plan : {rows_forward, columns_forward, columns_inverse, rows_inverse})
+      if (plan != nullptr) Fftw<Real>::destroy(plan);
+  }
+  /// The process's plans; destroyed after every operator that uses them (function-local
+  /// statics are destroyed in the reverse order of their construction).
+  struct Cache {
+    std::map<std::tuple<int, int, int>, FftwPlans> plans;
+    Cache() = default;
+    Cache(const Cache&) = delete;
+    Cache& operator=(const Cache&) = delete;
+    ~Cache() {
+      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+      for (const auto& entry : plans) entry.second.destroy();
+    }
+  };
 };
 
 /// The FFTW back end: float, double and long double.
