@@ -40,6 +40,7 @@
 #include <type_traits>
 #include <variant>
 #include <vector>
+#include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/material/dma_fit.hpp>
@@ -216,6 +217,13 @@ class Output {
         throw std::invalid_argument("viscoroll-solve: --plot " + options_.plot +
                                     ": cannot write sweep.csv there");
     }
+    if (!options_.profile_out.empty()) {
+      profile_csv_.open(options_.profile_out);
+      if (!profile_csv_)
+        throw std::invalid_argument("viscoroll-solve: --profile-out " + options_.profile_out +
+                                    ": cannot be opened for writing");
+      profile_csv_ << "tau,temperature,speed,y,f0,a,b,p_max\n";
+    }
     if (!options_.csv.empty()) {
       csv_.open(options_.csv);
       if (!csv_)
@@ -232,10 +240,29 @@ class Output {
   /// Keeps a message for stderr (a warning, a solve that did not converge), printed by flush().
   void note(std::string message) { notes_.push_back(std::move(message)); }
 
+  /// Keeps the contact along the roller of a bem solve for --profile-out (one row per grid row
+  /// of the contact; tau or the temperature empty when not the sweep's variable).
+  template <class Solution>
+  void add_profile(double tau, double temperature, double speed, const Solution& s) {
+    if (!profile_csv_.is_open()) return;
+    const auto along = s.along_roller();
+    const auto number = [](double x) {
+      return std::isnan(x) ? std::string() : viscoroll::cli::scene_detail::shortest(x);
+    };
+    for (std::size_t k = 0; k < along.y.size(); ++k)
+      pending_profile_.push_back(number(tau) + "," + number(temperature) + "," + number(speed) +
+                                 "," + number(along.y[k]) + "," + number(along.f0[k]) + "," +
+                                 number(along.a[k]) + "," + number(along.b[k]) + "," +
+                                 number(along.p_max[k]));
+  }
+
   /// Prints the kept results (stdout, the CSV files) and then the messages (stderr).
   void flush() {
     for (const Record& r : pending_) emit(r);
     pending_.clear();
+    for (const std::string& row : pending_profile_) profile_csv_ << row << "\n";
+    if (profile_csv_.is_open()) profile_csv_.flush();
+    pending_profile_.clear();
     for (const std::string& m : notes_) std::cerr << m << "\n";
     notes_.clear();
   }
@@ -273,6 +300,7 @@ class Output {
   bool finish() {
     flush();
     if (csv_.is_open()) csv_.close();
+    if (profile_csv_.is_open()) profile_csv_.close();
     if (!plot_csv_.is_open()) return true;
     plot_csv_.close();
     return plot();
@@ -380,7 +408,8 @@ class Output {
   const SolveOptions& options_;
   Method method_;
   std::size_t total_, count_ = 0;
-  std::ofstream csv_, plot_csv_;
+  std::ofstream csv_, plot_csv_, profile_csv_;
+  std::vector<std::string> pending_profile_;
   std::string header_;
   fs::path gnuplot_;
   bool progress_ = false;
@@ -407,6 +436,11 @@ struct Problem {
   std::vector<double> temperatures;
   /// The line method's settings (--oversampling, --basis, --max-iterations): LineOptions.
   viscoroll::LineOptions line;
+  /// A roller of finite length from the scene file (bem only; docs/rollers.md), with its tilt.
+  std::optional<std::variant<viscoroll::Tilted<viscoroll::CrownedCylinder<double>>,
+                             viscoroll::Tilted<viscoroll::LogarithmicCrown<double>>,
+                             viscoroll::Tilted<viscoroll::TabulatedProfile<double>>>>
+      roller;
 };
 
 /// --oversampling, --basis and --max-iterations into LineOptions (their defaults where not given).
@@ -421,7 +455,7 @@ viscoroll::LineOptions line_options(const SolveOptions& o) {
 
 Problem from_options(const SolveOptions& o) {
   return {*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
-          o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o)};
+          o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o), {}};
 }
 
 /// The prony material of a scene file: its terms, or the fit of its DMA file (the report on
@@ -528,11 +562,29 @@ Problem from_scene(const SolveOptions& o) {
   std::visit(
       [&](const auto& r) {
         using R = std::decay_t<decltype(r)>;
+        using viscoroll::Tilted;
         if constexpr (std::is_same_v<R, EllipsoidProfile>) {
           p.c1 = r.c1, p.c2 = r.c2;
-        } else {
-          static_assert(std::is_same_v<R, CylinderProfile>);
+        } else if constexpr (std::is_same_v<R, CylinderProfile>) {
           p.c1 = 1 / r.radius;
+        } else {
+          p.c1 = 1 / r.radius;
+          // The library validates what the reader has not (a table's spline); its message names
+          // the parameter, here under the scene's key.
+          try {
+            if constexpr (std::is_same_v<R, viscoroll::cli::CrownedProfile>)
+              p.roller = Tilted(viscoroll::CrownedCylinder<double>(r.radius, r.flat_length,
+                                                                   r.crown_radius, r.length),
+                                r.tilt);
+            else if constexpr (std::is_same_v<R, viscoroll::cli::LogarithmicProfile>)
+              p.roller = Tilted(
+                  viscoroll::LogarithmicCrown<double>(r.radius, r.length, r.scale, r.end_drop),
+                  r.tilt);
+            else
+              p.roller = Tilted(viscoroll::TabulatedProfile<double>(r.radius, r.y, r.h), r.tilt);
+          } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("viscoroll-solve: " + o.scene + ": roller: " + e.what());
+          }
         }
       },
       scene.roller);
@@ -773,17 +825,22 @@ int bem_grid(const Problem& p) {
 }
 
 /// The fields of a bem record after its `head` (method and the material's keys, speed).
+/// `axial`: a roller of finite length, whose contact's ends are along_roller()'s (the
+/// ellipsoid's are -l, l of (B12)).
 template <class Solution>
-Record bem_record(Record head, const Solution& s, double seconds, int grid) {
+Record bem_record(Record head, const Solution& s, double seconds, int grid, bool axial) {
   std::size_t peak = 0;
   for (std::size_t q = 0; q < s.pressure.size(); ++q)
     if (s.pressure[q] > s.pressure[peak]) peak = q;
   const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
+  const auto along = s.along_roller();
   Record tail = {{"a0", s.a0},
                  {"b0", s.b0},
                  {"l", s.l},
-                 {"y_minus", -s.l},
-                 {"y_plus", s.l},
+                 {"y_minus", axial ? along.y_minus : -s.l},
+                 {"y_plus", axial ? along.y_plus : s.l},
+                 {"f0_max", along.f0_max},
+                 {"f0_max_y", along.f0_max_y},
                  {"d", s.d},
                  {"a_long_term", s.long_term.a},
                  {"l0", s.long_term.b},
@@ -825,13 +882,27 @@ int bem_table_threads(const Problem& p) {
 /// long-term contact), and the speeds are swept as the line method's are, each seeded with the
 /// previous converged contact of its chunk. A prony material is solved at each temperature.
 int run_bem(const Problem& p, Output& out) {
-  const double c2 = required_c2(p, "bem");
   viscoroll::BemOptions options;
   options.grid = bem_grid(p);
   options.threads = bem_table_threads(p);
+  // A roller of finite length: its scene (gap, body, grid) from bem_scene, sized by the
+  // long-term compliance, which neither tau nor the temperature changes; else the ellipsoid's.
+  const viscoroll::BemScene<double> base =
+      p.roller ? std::visit(
+                     [&](const auto& roller) {
+                       return p.prony ? viscoroll::bem_scene(roller, *p.prony, p.load, 0.0)
+                                      : viscoroll::bem_scene(roller, material(p, p.tau.front()),
+                                                             p.load, 0.0);
+                     },
+                     *p.roller)
+               : viscoroll::BemScene<double>{
+                     .c1 = p.c1, .c2 = required_c2(p, "bem"), .load = p.load, .speed = 0.0};
   const auto scene_at = [&](double speed) {
-    return viscoroll::BemScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
+    auto scene = base;
+    scene.speed = speed;
+    return scene;
   };
+  const bool axial = bool(p.roller);
   if (p.prony)
     return run_sweeps(
         p, p.temperatures, out, scene_at,
@@ -845,7 +916,8 @@ int run_bem(const Problem& p, Output& out) {
                               {"temperature", temperature},
                               {"a_T", a_t},
                               {"speed", scene.speed}},
-                             s, seconds, options.grid));
+                             s, seconds, options.grid, axial));
+          out.add_profile(std::nan(""), temperature, scene.speed, s);
           note_outcome(out, "bem", temperature_label(p, temperature, scene.speed), s);
         });
   return run_sweeps(
@@ -856,7 +928,8 @@ int run_bem(const Problem& p, Output& out) {
                             {"tau", tau},
                             {"speed", scene.speed},
                             {"vtau", scene.speed * tau}},
-                           s, seconds, options.grid));
+                           s, seconds, options.grid, axial));
+        out.add_profile(tau, std::nan(""), scene.speed, s);
         note_outcome(out, "bem", label(p, tau, scene.speed), s);
       });
 }
@@ -875,6 +948,10 @@ int main(int argc, char** argv) {
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");
+    if (!options.profile_out.empty() && problem.method != Method::bem)
+      throw std::invalid_argument(
+          "viscoroll-solve: --profile-out is valid only with --method bem (the contact along the "
+          "roller: docs/cli.md)");
     Output out(
         options, problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
@@ -75,7 +76,37 @@ struct CylinderProfile {
   double radius = 0;
 };
 
-using RollerProfile = std::variant<EllipsoidProfile, CylinderProfile>;
+/// A cylinder of radius `radius` with a flat part of length flat_length and circular crowns of
+/// radius crown_radius beyond it, cut at length (inf: at the crown circle's end), run misaligned
+/// by tilt (rad): viscoroll::CrownedCylinder in viscoroll::Tilted (docs/rollers.md).
+struct CrownedProfile {
+  double radius = 0, flat_length = 0, crown_radius = 0;
+  double length = std::numeric_limits<double>::infinity(), tilt = 0;
+};
+
+/// A logarithmic crown h = -A ln(1 - k (2y/L)^2) on a roller of radius and length L, scale A,
+/// end drop z_m (inf: Lundberg's), run misaligned by tilt: viscoroll::LogarithmicCrown.
+struct LogarithmicProfile {
+  double radius = 0, length = 0, scale = 0;
+  double end_drop = std::numeric_limits<double>::infinity(), tilt = 0;
+};
+
+/// A drop h(y) tabulated at y (m, strictly increasing, at least 4 points), interpolated by the
+/// modified Akima spline, run misaligned by tilt: viscoroll::TabulatedProfile.
+struct TableProfile {
+  double radius = 0;
+  std::vector<double> y, h;
+  double tilt = 0;
+};
+
+using RollerProfile = std::variant<EllipsoidProfile, CylinderProfile, CrownedProfile,
+                                   LogarithmicProfile, TableProfile>;
+
+/// The profiles of a roller of finite length, which the bem method takes (docs/rollers.md).
+inline bool is_axial_profile(const RollerProfile& r) {
+  return std::holds_alternative<CrownedProfile>(r) ||
+         std::holds_alternative<LogarithmicProfile>(r) || std::holds_alternative<TableProfile>(r);
+}
 
 struct Scene {
   std::string description;
@@ -193,6 +224,12 @@ inline std::string range_of(std::string_view key) {
       {"c1", "c1 > 0 (1/m, finite)"},
       {"c2", "c2 > 0 (1/m, finite; line: c2 < 8 e^-3 c1)"},
       {"radius", "radius > 0 (m, finite)"},
+      {"flat_length", "flat_length >= 0 (m, finite)"},
+      {"crown_radius", "crown_radius > 0 (m, finite)"},
+      {"length", "length > 0 (m, finite; crowned: length > flat_length)"},
+      {"scale", "scale > 0 (m, finite)"},
+      {"end_drop", "end_drop > 0 (m, finite; leave it out for Lundberg's profile)"},
+      {"tilt", "|tilt| < 0.1 (rad)"},
       {"load", "load > 0 (N; N/m for the plane method; finite)"},
       {"speeds", "speed >= 0 (m/s, finite)"},
       {"grid", "1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)"},
@@ -336,6 +373,28 @@ inline const std::vector<MaterialReader>& material_readers() {
   return readers;
 }
 
+/// The optional "tilt" of a roller (rad, |tilt| < 0.1; 0 when absent).
+inline double read_tilt(const ObjectReader& r) {
+  if (!r.has("tilt")) return 0;
+  return r.number("tilt", [](double x) { return std::abs(x) < 0.1; });
+}
+
+/// The array of numbers at `key` (at least `min_size`, each finite), named "roller.y[3]".
+inline std::vector<double> read_numbers(const ObjectReader& r, std::string_view key,
+                                        std::size_t min_size) {
+  const json& list = r.at(key);
+  const std::string path = r.name(key);
+  if (!list.is_array()) r.fail(path + " must be an array of numbers, got " + type_of(list));
+  if (list.size() < min_size)
+    r.fail(path + " has " + std::to_string(list.size()) + " values; give at least " +
+           std::to_string(min_size));
+  std::vector<double> out;
+  for (std::size_t k = 0; k < list.size(); ++k)
+    out.push_back(r.checked_number(list[k], path + "[" + std::to_string(k) + "]", finite,
+                                   "a finite number (m)"));
+  return out;
+}
+
 struct RollerReader {
   std::string profile;
   std::vector<std::string> keys;  ///< besides "profile"
@@ -353,6 +412,56 @@ inline const std::vector<RollerReader>& roller_readers() {
        {"radius"},
        [](const ObjectReader& r) -> RollerProfile {
          return CylinderProfile{r.number("radius", positive)};
+       }},
+      {"crowned",
+       {"radius", "flat_length", "crown_radius", "length", "tilt"},
+       [](const ObjectReader& r) -> RollerProfile {
+         CrownedProfile c;
+         c.radius = r.number("radius", positive);
+         c.flat_length = r.number("flat_length", non_negative);
+         c.crown_radius = r.number("crown_radius", positive);
+         if (r.has("length")) {
+           c.length = r.number("length", positive);
+           if (!(c.length > c.flat_length))
+             r.fail(r.name("length") + " = " + shortest(c.length) +
+                    " is outside the valid range length > flat_length = " +
+                    shortest(c.flat_length) + " (m)");
+         }
+         c.tilt = read_tilt(r);
+         return c;
+       }},
+      {"logarithmic",
+       {"radius", "length", "scale", "end_drop", "tilt"},
+       [](const ObjectReader& r) -> RollerProfile {
+         LogarithmicProfile g;
+         g.radius = r.number("radius", positive);
+         g.length = r.number("length", positive);
+         g.scale = r.number("scale", positive);
+         if (r.has("end_drop")) g.end_drop = r.number("end_drop", positive);
+         g.tilt = read_tilt(r);
+         return g;
+       }},
+      {"table",
+       {"radius", "y", "h", "tilt"},
+       [](const ObjectReader& r) -> RollerProfile {
+         TableProfile t;
+         t.radius = r.number("radius", positive);
+         t.y = read_numbers(r, "y", 4);
+         t.h = read_numbers(r, "h", 4);
+         if (t.h.size() != t.y.size())
+           r.fail(r.name("h") + " has " + std::to_string(t.h.size()) +
+                  " values; give one per point of " + r.name("y") + " (" +
+                  std::to_string(t.y.size()) + ")");
+         for (std::size_t k = 1; k < t.y.size(); ++k)
+           if (!(t.y[k] > t.y[k - 1]))
+             r.fail(r.name("y") + "[" + std::to_string(k) + "] = " + shortest(t.y[k]) +
+                    " is outside the valid range y[k] > y[k-1] = " + shortest(t.y[k - 1]) +
+                    " (m, strictly increasing)");
+         if (!(t.y.front() < 0 && t.y.back() > 0))
+           r.fail(r.name("y") + " = [" + shortest(t.y.front()) + " ... " + shortest(t.y.back()) +
+                  "] must hold y = 0 strictly inside (the roller's centre section)");
+         t.tilt = read_tilt(r);
+         return t;
        }},
   };
   return readers;
@@ -555,6 +664,12 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   return scene;
 }
 
+/// The scene file's name of a roller profile ("crowned").
+inline std::string roller_profile_name(const RollerProfile& r) {
+  static const char* const names[] = {"ellipsoid", "cylinder", "crowned", "logarithmic", "table"};
+  return names[r.index()];
+}
+
 /// Checks what depends on the method: the cylinder is the plane method's roller only; the line
 /// method needs a slender contact (0 < c2 < 8 e^-3 c1, LineScene::validate), the bem method
 /// 1e-10 <= c2/c1 <= 1e10 (BemScene::validate); the file's grid, its method's range.
@@ -565,6 +680,10 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
   const std::string m = method_name(method);
   if (std::holds_alternative<PronyModel>(scene.material) && method == Method::line)
     fail(prony_needs_bem());
+  if (is_axial_profile(scene.roller) && method != Method::bem)
+    fail("roller.profile = \"" + roller_profile_name(scene.roller) +
+         "\" suits the bem method only, not " + m +
+         " (the line method takes the ellipsoid so far; docs/rollers.md)");
   if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)
     fail("roller.profile = \"cylinder\" suits the plane method only, not " + m +
          " (the line and bem methods need \"ellipsoid\" with c1 and c2)");

@@ -51,6 +51,8 @@ struct SolveOptions {
   Format format = Format::json;
   std::string csv;       ///< --csv FILE: the sweep as CSV too (empty: none)
   std::string plot;      ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
+  /// --profile-out FILE.csv: the contact along the roller of every bem solve (empty: none)
+  std::string profile_out;
   unsigned threads = 0;  ///< --threads N: threads of the speed sweep (0: every core)
   /// --temperature T[,T...] (degrees Celsius): replaces the scene's "temperature"; valid only
   /// with a scene whose material is a prony series with a shift law.
@@ -69,7 +71,7 @@ inline std::string usage() {
          "[--max-iterations N]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
          "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
-         "[--plot DIR] [--threads N]";
+         "[--plot DIR] [--profile-out FILE.csv] [--threads N]";
 }
 
 /// A finite number, the whole of `text`.
@@ -103,7 +105,7 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
       "--method", "--mu-d", "--nu",      "--f",          "--tau",   "--speed",
       "--c1",     "--c2",   "--load",    "--grid",       "--scene", "--format",
       "--csv",    "--plot", "--threads", "--temperature", "--oversampling", "--basis",
-      "--max-iterations"};
+      "--max-iterations", "--profile-out"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -143,8 +145,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
         throw std::invalid_argument(
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
-            "--grid, --speed, --temperature, --format, --csv, --plot, --threads, --oversampling, "
-            "--basis and --max-iterations may go with it)");
+            "--grid, --speed, --temperature, --format, --csv, --plot, --profile-out, --threads, "
+            "--oversampling, --basis and --max-iterations may go with it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -229,6 +231,15 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     o.plot = std::string(given["--plot"]);
     if (o.plot.empty())
       throw std::invalid_argument("viscoroll-solve: --plot expects a directory, got ''");
+  }
+  if (given.count("--profile-out")) {
+    o.profile_out = std::string(given["--profile-out"]);
+    if (o.profile_out.empty())
+      throw std::invalid_argument("viscoroll-solve: --profile-out expects a file name, got ''");
+    if (o.method && *o.method != Method::bem)
+      throw std::invalid_argument(
+          "viscoroll-solve: --profile-out is valid only with --method bem (the contact along the "
+          "roller: docs/cli.md)");
   }
   return o;
 }

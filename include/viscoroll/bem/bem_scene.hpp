@@ -6,9 +6,11 @@
 // shape S = d - h (Eq. 27) and the gap g = u - S = u - d + h >= 0 (Eq. 13 in contact, g = 0).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 #include <viscoroll/bem/hertz.hpp>
@@ -29,10 +31,15 @@ struct BemScene {
   Real load = detail::required_field<Real>();    ///< total load P, N
   Real speed = detail::required_field<Real>();   ///< rolling speed V, m/s
   std::function<Real(Real, Real)> profile = {};  ///< h(x, y), or empty for the parabolic gap
+  /// Where the roller's body ends along y (+-inf: it does not). The solver warns when the
+  /// contact reaches a cell at an end; the gap beyond is the profile's (bem_scene() makes it a
+  /// chamfer, bem_profile.hpp).
+  Real y_min = -std::numeric_limits<Real>::infinity();
+  Real y_max = std::numeric_limits<Real>::infinity();
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, c2 > 0, 1e-10 <= c2/c1 <=
-  /// 1e10, load > 0, speed >= 0, all finite. (The profile's values are checked by
-  /// BemSolver::solve, at the cell centres of its grid.)
+  /// 1e10, load > 0, speed >= 0, all finite, and y_min < 0 < y_max (not NaN). (The profile's
+  /// values are checked by BemSolver::solve, at the cell centres of its grid.)
   void validate() const {
     detail::require_positive("c1", c1);
     detail::require_positive("c2", c2);
@@ -40,6 +47,8 @@ struct BemScene {
                     "1e-10 <= c2/c1 <= 1e10");
     detail::require_positive("load", load);
     detail::require_non_negative("speed", speed);
+    detail::require(y_min < 0, "y_min", y_min, "y_min < 0 (the body holds the section y = 0)");
+    detail::require(y_max > 0, "y_max", y_max, "y_max > 0 (the body holds the section y = 0)");
   }
 
   /// h(x, y): the profile, or c1 x^2/2 + c2 y^2/2.
@@ -127,6 +136,36 @@ struct BemGrid {
   }
 };
 
+namespace bem {
+
+/// (B12): where a square-root pressure edge lies beyond the last contact cell, in cells from its
+/// centre: p^2 (linear in the distance to the edge) extrapolated from the last two cells'
+/// pressures to zero, within the cell beyond; half a cell when that is not defined.
+template <RealScalar Real>
+Real edge_offset(Real p_last, Real p_prev) {
+  const Real a = p_last * p_last, b = p_prev * p_prev;
+  if (!(b > a)) return Real(1) / 2;
+  return std::min(a / (b - a), Real(1));
+}
+
+}  // namespace bem
+
+/// The contact along the roller's axis (docs/rollers.md, "Outputs along the roller"): at each
+/// station y, the load per unit length F0(y) (Eq. 33), the half width a(y) and the offset b(y)
+/// of the contact's centre ahead of the roller's axis (Eq. 29), and the largest pressure there;
+/// the contact's ends y_minus < y_plus and the peak of F0.
+template <RealScalar Real>
+struct AlongRoller {
+  std::vector<Real> y;      ///< stations (the BEM: its grid's rows from y_minus to y_plus)
+  std::vector<Real> f0;     ///< load per unit length, N/m
+  std::vector<Real> a;      ///< half width of the contact, m
+  std::vector<Real> b;      ///< offset of its centre ahead of the axis, m
+  std::vector<Real> p_max;  ///< largest pressure across the contact, Pa
+  Real y_minus = 0, y_plus = 0;  ///< the contact's ends along y
+  Real f0_max = 0;               ///< the largest F0
+  Real f0_max_y = 0;             ///< where it is (the first station, if several)
+};
+
 /// The boundary-element solution: pressure on the grid, the contact's measures, diagnostics.
 template <RealScalar Real>
 struct BemSolution {
@@ -153,6 +192,63 @@ struct BemSolution {
 
   /// The pressure of cell (i, j).
   Real p(int i, int j) const { return pressure[grid.index(i, j)]; }
+
+  /// The contact along the roller, row by row: F0 = hx sum_i p (the midpoint rule of Eq. 33 on
+  /// the cells), the edges of each row's contact (the stretch of contact cells around the row's
+  /// peak) by (B12)'s square-root extrapolation, and the ends y_minus, y_plus by extrapolating
+  /// F0 linearly to zero from the last two loaded rows (F0 ~ a^2 vanishes linearly at a
+  /// square-root tip, Eq. 48), within the row beyond. Error: of order hx in a, b and hy in the
+  /// ends (docs/bem.md, B12). Empty when no cell is loaded.
+  AlongRoller<Real> along_roller() const {
+    AlongRoller<Real> out;
+    const auto at = [&](int i, int j) { return pressure[grid.index(i, j)]; };
+    std::vector<Real> row(static_cast<std::size_t>(grid.ny), Real(0));
+    int first = -1, last = -1;
+    for (int j = 0; j < grid.ny; ++j) {
+      for (int i = 0; i < grid.nx; ++i) row[static_cast<std::size_t>(j)] += std::max(at(i, j), Real(0));
+      if (row[static_cast<std::size_t>(j)] > 0) {
+        if (first < 0) first = j;
+        last = j;
+      }
+    }
+    if (first < 0) return out;
+    for (int j = first; j <= last; ++j) {
+      int peak = 0;
+      for (int i = 0; i < grid.nx; ++i)
+        if (at(i, j) > at(peak, j)) peak = i;
+      out.y.push_back(grid.y(j));
+      out.f0.push_back(grid.hx * row[static_cast<std::size_t>(j)]);
+      out.p_max.push_back(std::max(at(peak, j), Real(0)));
+      if (!(at(peak, j) > 0)) {
+        out.a.push_back(0);
+        out.b.push_back(0);
+        continue;
+      }
+      int lead = peak, trail = peak;
+      while (lead + 1 < grid.nx && at(lead + 1, j) > 0) ++lead;
+      while (trail > 0 && at(trail - 1, j) > 0) --trail;
+      const bool wide = lead > trail;
+      const Real xl = grid.x(lead) + grid.hx * (wide ? bem::edge_offset(at(lead, j), at(lead - 1, j))
+                                                     : Real(1) / 2);
+      const Real xt = grid.x(trail) - grid.hx * (wide ? bem::edge_offset(at(trail, j), at(trail + 1, j))
+                                                      : Real(1) / 2);
+      out.a.push_back((xl - xt) / 2);
+      out.b.push_back((xl + xt) / 2);
+    }
+    // F0 vanishes linearly at a square-root tip: its zero from the last two rows, within the row
+    // beyond (half a row when the rows do not fall towards the end).
+    const auto tip = [&](int j, int inner) {
+      const Real f_end = row[static_cast<std::size_t>(j)];
+      const Real f_in = inner >= first && inner <= last ? row[static_cast<std::size_t>(inner)] : Real(0);
+      return f_in > f_end ? std::min(f_end / (f_in - f_end), Real(1)) : Real(1) / 2;
+    };
+    out.y_plus = grid.y(last) + grid.hy * tip(last, last - 1);
+    out.y_minus = grid.y(first) - grid.hy * tip(first, first + 1);
+    const auto peak = std::max_element(out.f0.begin(), out.f0.end());
+    out.f0_max = *peak;
+    out.f0_max_y = out.y[static_cast<std::size_t>(peak - out.f0.begin())];
+    return out;
+  }
 };
 
 }  // namespace viscoroll

@@ -308,6 +308,27 @@ class BemSolver {
         }
       }
     }
+    // A contact that reaches the roller's end (a cell whose neighbour lies beyond the body) has
+    // a pressure peak there that only the grid bounds (bem_profile.hpp).
+    if (sol.converged && (scene.y_min > -std::numeric_limits<Real>::infinity() ||
+                          scene.y_max < std::numeric_limits<Real>::infinity())) {
+      for (int j = 0; j < grid.ny; ++j) {
+        const Real y = grid.y(j);
+        if (!(y - grid.hy <= scene.y_min || y + grid.hy >= scene.y_max)) continue;
+        if (!(y > scene.y_min && y < scene.y_max)) continue;
+        bool loaded = false;
+        for (int i = 0; i < grid.nx && !loaded; ++i) loaded = sol.p(i, j) > 0;
+        if (loaded) {
+          sol.warnings.push_back(
+              "the contact reaches the roller's end at y = " +
+              detail::format_binary(y < 0 ? scene.y_min : scene.y_max, length_exponent) +
+              ": its end pressure peak is resolved only to the grid (hy = " +
+              detail::format_binary(grid.hy, length_exponent) +
+              "); the line theory does not apply there");
+          break;
+        }
+      }
+    }
     // std::max skips a NaN in its second argument: a result with a non-finite number gets a NaN
     // residual and is never reported converged.
     bool finite = (boost::math::isfinite)(sol.d) && (boost::math::isfinite)(sol.load) &&
@@ -322,14 +343,6 @@ class BemSolver {
         sol.reason = "non-finite value in the solution";
       }
     }
-  }
-
-  /// (B12): edges by extrapolating p^2 (linear in the distance to a square-root edge) from the
-  /// last two contact cells to zero, within the cell beyond the last contact cell.
-  static Real edge_offset(Real p_last, Real p_prev) {
-    const Real a = p_last * p_last, b = p_prev * p_prev;
-    if (!(b > a)) return Real(1) / 2;
-    return std::min(a / (b - a), Real(1));
   }
 
   struct Edges {
@@ -349,11 +362,11 @@ class BemSolver {
     int lead = imax, trail = imax;
     while (lead + 1 < g.nx && at(lead + 1, j0) > 0) ++lead;
     while (trail > 0 && at(trail - 1, j0) > 0) --trail;
-    const Real xl = g.x(lead) + g.hx * (lead > trail ? edge_offset(at(lead, j0), at(lead - 1, j0))
+    const Real xl = g.x(lead) + g.hx * (lead > trail ? bem::edge_offset(at(lead, j0), at(lead - 1, j0))
                                                      : Real(1) / 2);
     const Real xt =
         g.x(trail) -
-        g.hx * (lead > trail ? edge_offset(at(trail, j0), at(trail + 1, j0)) : Real(1) / 2);
+        g.hx * (lead > trail ? bem::edge_offset(at(trail, j0), at(trail + 1, j0)) : Real(1) / 2);
     // l: the row loads F0(y_j) = hx sum_i p vanish linearly in y^2 at an elliptic tip (exactly
     // so for Hertz, (B12)); extrapolate the last two loaded rows to zero.
     std::vector<Real> row(static_cast<std::size_t>(g.ny), Real(0));
@@ -427,7 +440,9 @@ class BemSolver {
                          .c2 = times_power_of_two(b2.m, b2.e - b1.e),
                          .load = times_power_of_two(bp.m, bp.e - pressure - 2 * length),
                          .speed = Real(1),
-                         .profile = {}},
+                         .profile = {},
+                         .y_min = times_power_of_two(scene.y_min, -length),
+                         .y_max = times_power_of_two(scene.y_max, -length)},
                .compliance = times_power_of_two(bc.m, -bf.e),
                .terms = {},
                .length = length,
