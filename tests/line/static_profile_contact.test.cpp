@@ -17,7 +17,7 @@ double rel(double x, double ref) {
   return std::abs(x - ref) / std::abs(ref);
 }
 
-/// int F0 dy by composite Gauss-Legendre (64 panels of 16 points), independent of (S2)'s
+/// int F0 dy by composite Gauss-Legendre (64 panels of 16 points), independent of (G2)'s
 /// Clenshaw-Curtis weights.
 template <class S>
 double load_of(const S& s) {
@@ -54,7 +54,7 @@ TEST_CASE("static profile contact: the ellipsoid is Kalker's closed form (48)") 
 
 TEST_CASE("static profile contact: a tilted ellipsoid is the ellipsoid shifted (the log term on [y_-, y_+])") {
   // h = C2 y^2/2 + theta y = C2 (y + theta/C2)^2/2 - theta^2/(2 C2): the contact is Kalker's,
-  // centred at -theta/C2, with d lowered by theta^2/(2 C2); only (S1)'s 16 (y_+ - y)(y - y_-)
+  // centred at -theta/C2, with d lowered by theta^2/(2 C2); only (G1)'s 16 (y_+ - y)(y - y_-)
   // gives that, since t is no longer y/l.
   const double c1 = 1, c2 = 0.1, cl = 0.3, theta = 0.02;
   const auto k = static_line_contact(c1, c2, cl);
@@ -98,8 +98,8 @@ TEST_CASE("static profile contact: a barrel (L_f = 0) is the ellipsoid C2 = 1/R_
   }
 }
 
-TEST_CASE("static profile contact: a long flat part carries the strip of (S1) at its local load") {
-  // On the flat part (h = 0) far from its ends, (S1) reads
+TEST_CASE("static profile contact: a long flat part carries the strip of (G1) at its local load") {
+  // On the flat part (h = 0) far from its ends, (G1) reads
   //   d = F0 [1 + ln(16 (y_+ - y)(y - y_-)/a^2)] + FP[F0](y),  a^2 = 4 F0/C1 (2-D Hertz),
   // the plane strip whose far field is referred to the contact's ends; FP[F0] is the ends'
   // share, small when the flat part is long. Checked off the collocation points with FP by
@@ -119,7 +119,7 @@ TEST_CASE("static profile contact: a long flat part carries the strip of (S1) at
     const double fp = ops.finite_part(f0, y - c);
     const double strip = f * (1 + std::log(16 * (s.y_plus - y) * (y - s.y_minus) / (a * a)));
     INFO("y = " << y << ": FP/d = " << fp / s.d);
-    CHECK(std::abs(strip + fp - s.d) < 2e-3 * s.d);  // (S1) between the points: discretisation
+    CHECK(std::abs(strip + fp - s.d) < 2e-3 * s.d);  // (G1) between the points: discretisation
     CHECK(std::abs(fp) < 0.1 * s.d);
     CHECK(rel<double>(f, s.f0(0.0)) < 0.05);
   }

@@ -3,22 +3,22 @@
 // Panek & Kalker (1980), Eqs. (33), (34), (47) at V tau = 0 for a drop h(y) in place of
 // C2 y^2/2 and a contact [y_-, y_+] that need not be symmetric (docs/theory.md, "Line contact for
 // any roller profile (static)"): with b = 0, G = 0 and F0 = C1 a^2/4,
-//   (S1)  FP[F0](y) + F0(y) ln[16 (y_+ - y)(y - y_-)/a^2] + C1 a^2/4 + h(y) - d = 0,
-//   (S2)  int_{y_-}^{y_+} F0 dy = compliance * load,
+//   (G1)  FP[F0](y) + F0(y) ln[16 (y_+ - y)(y - y_-)/a^2] + C1 a^2/4 + h(y) - d = 0,
+//   (G2)  int_{y_-}^{y_+} F0 dy = compliance * load,
 // the log term being (34)'s 16 (l^2 - y^2) = 16 (l - y)(l + y) with the distances to the ends.
 // The half width is
-//   (S3)  a(y) = a_ref sqrt(omega(t)) exp(g(t)),  g = sum_{k<N} alpha_k T_k(t),
+//   (G3)  a(y) = a_ref sqrt(omega(t)) exp(g(t)),  g = sum_{k<N} alpha_k T_k(t),
 //         t = (2y - y_+ - y_-)/(y_+ - y_-),  omega = (1 + e^2)(1 - t^2)/(1 - t^2 + e^2),
 // a square root at both ends as in (48), no parity, and an end layer e (omega = 1 - t^2 for
 // e = +inf, which makes alpha = 0 Kalker's ellipse; a small e is a flat contact with short ends),
 // chosen once from the sliced starting guess. The unknowns alpha_k, ln l (l the half length), the
-// centre c = (y_+ + y_-)/2 and d meet (S1) at the N + 2 roots of T_{N+2}(t) and (S2): a square
+// centre c = (y_+ + y_-)/2 and d meet (G1) at the N + 2 roots of T_{N+2}(t) and (G2): a square
 // system, solved by Newton's method with an analytic Jacobian and backtracking.
 //
 // In t, F0 = (C1 a_ref^2/4) omega(t) exp(2 g(t)) is analytic on [-1, 1], and the finite part is
 // scale free, FP[F0](y) = int_{-1}^{1} (F(t') - F(t))/|t' - t| dt' (dy' = l dt', |y' - y| = l|t' - t|):
 // F is interpolated at M + 1 Chebyshev-Lobatto points, and FP of each T_n is a polynomial in
-// closed form (S4), so that FP at the collocation points and the load are fixed matrices applied to
+// closed form (G4), so that FP at the collocation points and the load are fixed matrices applied to
 // the values of F; M doubles until F's Chebyshev tail is below eps^(2/3).
 #pragma once
 
@@ -40,19 +40,19 @@
 namespace viscoroll {
 
 /// The static line contact of a roller profile: the contact [y_minus, y_plus], the penetration d,
-/// the half width a(y) of (S3) and the load per length F0(y) = C1 a(y)^2/4 (Eq. 33 at V tau = 0).
+/// the half width a(y) of (G3) and the load per length F0(y) = C1 a(y)^2/4 (Eq. 33 at V tau = 0).
 ///
 /// Members:
-///   - `y_minus`, `y_plus`, `d`; `c1`, `a_ref`, `alpha` (the coefficients of (S3));
+///   - `y_minus`, `y_plus`, `d`; `c1`, `a_ref`, `alpha` (the coefficients of (G3));
 ///   - `a(y)`, `f0(y)`: zero outside the contact;
 ///   - `y`, `a_nodes`, `f0_nodes`: a(y), F0(y) at the M + 1 Chebyshev-Lobatto points of the
 ///     contact (ends included, where both are 0), from y_minus to y_plus;
-///   - `converged` (the residual of (S1), (S2) is below `tolerance`), `reason` when it is not,
-///     `residual` (the largest, (S1) in units of C1 a_ref^2, (S2) relative), `iterations`, `points`
+///   - `converged` (the residual of (G1), (G2) is below `tolerance`), `reason` when it is not,
+///     `residual` (the largest, (G1) in units of C1 a_ref^2, (G2) relative), `iterations`, `points`
 ///     (M);
 ///   - `warnings`: the contact reaches the roller's body end (outside the theory: the result is
 ///     then not converged), or is not slender (l/max a < 3).
-/// omega(t) of (S3) with end layer e: 1 - t^2 for e = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 + e^2),
+/// omega(t) of (G3) with end layer e: 1 - t^2 for e = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 + e^2),
 /// which rises from the ends over 1 - t^2 ~ e^2 to 1 (a flat contact with short ends).
 template <RealScalar Real>
 Real static_profile_weight(Real e, Real t) {
@@ -65,7 +65,7 @@ template <RealScalar Real>
 struct StaticProfileContact {
   Real y_minus, y_plus, d;
   Real c1, a_ref;
-  Real epsilon = std::numeric_limits<Real>::infinity();  ///< the end layer of (S3), +inf: none
+  Real epsilon = std::numeric_limits<Real>::infinity();  ///< the end layer of (G3), +inf: none
   std::vector<Real> alpha;
   std::vector<Real> y, a_nodes, f0_nodes;
   bool converged = false;
@@ -80,9 +80,9 @@ struct StaticProfileContact {
 
   Real half_length() const { return (y_plus - y_minus) / 2; }
   Real centre() const { return (y_plus + y_minus) / 2; }
-  /// t of (S3) for y in the contact.
+  /// t of (G3) for y in the contact.
   Real t(Real yy) const { return (2 * yy - y_plus - y_minus) / (y_plus - y_minus); }
-  /// a(y), Eq. (S3); 0 outside (y_minus, y_plus).
+  /// a(y), Eq. (G3); 0 outside (y_minus, y_plus).
   Real a(Real yy) const {
     using std::exp;
     using std::sqrt;
@@ -90,7 +90,7 @@ struct StaticProfileContact {
     const Real u = t(yy);
     return a_ref * sqrt(weight(u)) * exp(series(u));
   }
-  /// omega(t) of (S3): 1 - t^2 for epsilon = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 + e^2).
+  /// omega(t) of (G3): 1 - t^2 for epsilon = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 + e^2).
   Real weight(Real u) const { return static_profile_weight(epsilon, u); }
   /// F0(y) = C1 a^2/4 (Eq. 33 at V tau = 0).
   Real f0(Real yy) const {
@@ -117,7 +117,7 @@ Real chebyshev_integral(int n) {
   return n % 2 == 1 ? Real(0) : Real(2) / Real(1 - n * n);
 }
 
-/// FP[T_n](t) = int_{-1}^{1} (T_n(t') - T_n(t))/|t' - t| dt' for n = 0..m (docs/theory.md, (S4)):
+/// FP[T_n](t) = int_{-1}^{1} (T_n(t') - T_n(t))/|t' - t| dt' for n = 0..m (docs/theory.md, (G4)):
 /// from T_{n+1}(t') = 2 t' T_n(t') - T_{n-1}(t'),
 ///   P_{n+1} = 2 t P_n - P_{n-1} + 2 [J_n(1) - 2 J_n(t)],  J_n(t) = int_{-1}^{t} T_n,
 /// P_0 = 0, P_1 = -2t; J_0 = t + 1, J_1 = (t^2 - 1)/2,
@@ -140,7 +140,7 @@ void finite_part_chebyshev(Real t, int m, std::vector<Real>& p) {
     p[n + 1] = 2 * t * p[n] - p[n - 1] + 2 * (chebyshev_integral<Real>(n) - 2 * j_at(n));
 }
 
-/// The discretisation of (S1), (S2) at N terms and M + 1 interpolation points, in t: fixed
+/// The discretisation of (G1), (G2) at N terms and M + 1 interpolation points, in t: fixed
 /// matrices (they depend on N and M only).
 template <class Real>
 struct StaticProfileMatrices {
@@ -206,8 +206,8 @@ struct StaticProfileMatrices {
 }  // namespace detail
 
 /// The static line contact of `profile` under compliance_load = (1 - nu)/(2 pi mu) * P > 0 (Eq.
-/// (47)), with N = terms coefficients in (S3) (1 <= terms <= 64; the default 12 keeps the points
-/// a few half widths apart for contacts 20 or more half widths long, docs/theory.md (S5)). Throws
+/// (47)), with N = terms coefficients in (G3) (1 <= terms <= 64; the default 12 keeps the points
+/// a few half widths apart for contacts 20 or more half widths long, docs/theory.md (G5)). Throws
 /// std::invalid_argument
 /// naming the parameter; a Newton iteration that does not converge, or a contact that reaches the
 /// roller's body end, is returned with converged == false, the reason and (for the end) a warning.
@@ -241,7 +241,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   };
 
   // ---- The starting guess: slicing, F0 = (D - (h - h_min))/kappa, kappa = ln(16 l^2/a^2) + 1,
-  // (S1) without its finite part (docs/theory.md, "Line contact for any roller profile").
+  // (G1) without its finite part (docs/theory.md, "Line contact for any roller profile").
   // A length scale: the ellipsoid's a0^3 rho = 3 compliance load / C1.
   const Real len0 = cbrt(compliance_load / c1);
   Real y0 = (boost::math::isfinite)(ymin) && (boost::math::isfinite)(ymax) ? (ymin + ymax) / 2
@@ -347,7 +347,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   const Real l_ref = (e_plus - e_minus) / 2;
   out.a_ref = a_ref;
 
-  const Real scale = c1 * a_ref * a_ref;  // of (S1)
+  const Real scale = c1 * a_ref * a_ref;  // of (G1)
   const Real log16 = log(16 * l_ref * l_ref / (a_ref * a_ref));
 
   // ---- Unknowns x: alpha_0..alpha_{N-1}, lambda = ln(l/l_ref), gamma = c/l_ref,
@@ -357,7 +357,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   Real epsilon = std::numeric_limits<Real>::infinity();
   {
     // The sliced F0 at the roots of T_N (at least 16 of them), its end layer e (the omega of
-    // (S3) closest to it in ln, up to a constant, among e = +inf, 4, 2, ..., 1/32), and alpha
+    // (G3) closest to it in ln, up to a constant, among e = +inf, 4, 2, ..., 1/32), and alpha
     // from ln(F0/omega) by interpolation at the roots of T_N (DCT-II).
     using std::cos;
     const Real pi = boost::math::constants::pi<Real>();
@@ -396,7 +396,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     x[n + 2] = (hmin + level) / scale;
   }
   out.epsilon = epsilon;
-  // omega of (S3) and ln((1 - t^2)/omega) (0 for e = +inf), at the points of a discretisation.
+  // omega of (G3) and ln((1 - t^2)/omega) (0 for e = +inf), at the points of a discretisation.
   const auto weight = [&](Real t) { return static_profile_weight(epsilon, t); };
   const auto log_ratio = [&](Real t) {
     return epsilon < std::numeric_limits<Real>::infinity()
@@ -404,7 +404,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
                : Real(0);
   };
 
-  // ---- Residual and Jacobian of (S1) at tc (scaled by C1 a_ref^2) and (S2) (relative).
+  // ---- Residual and Jacobian of (G1) at tc (scaled by C1 a_ref^2) and (G2) (relative).
   int m = std::max(4 * n, 32);
   std::string end_note;
   const auto evaluate = [&](const detail::StaticProfileMatrices<Real>& mat, const Vector& xv,
@@ -434,7 +434,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     for (int i = 0; i < nc; ++i) {
       const Real t = mat.tc[i], y = c + l * t;
       const Real ft = weight(t) * exp(2 * gt[i]), lr = log_ratio(t);
-      // (S1): FP + F0 ln(16 l^2 (1 - t^2)/a^2) + C1 a^2/4 + h - d, a^2 = a_ref^2 omega e^2g.
+      // (G1): FP + F0 ln(16 l^2 (1 - t^2)/a^2) + C1 a^2/4 + h - d, a^2 = a_ref^2 omega e^2g.
       r[i] = (fp[i] + ft * (lg + lr - 2 * gt[i] + 1)) / 4 + (profile.drop(y) - dd * scale) / scale;
       if (jac != nullptr) {
         const Real slope = profile.drop_slope(y) / scale;
@@ -448,7 +448,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
         (*jac)(i, n + 2) = -1;
       }
     }
-    // (S2): l int F dt (C1 a_ref^2/4) = compliance load.
+    // (G2): l int F dt (C1 a_ref^2/4) = compliance load.
     const Real factor = l * scale / 4 / compliance_load;
     r[nc] = factor * mat.q.dot(fx) - 1;
     if (jac != nullptr) {
@@ -468,7 +468,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   // is above eps^(2/3).
   const Real tolerance = 64 * eps * (1 + abs(log16));
   // F's last two Chebyshev coefficients at M + 1 points, relative: eps^(2/3) (4e-11 in double)
-  // bounds the quadrature error of FP and (S2) far below the discretisation's.
+  // bounds the quadrature error of FP and (G2) far below the discretisation's.
   const Real tail_tolerance = cbrt(eps * eps);
   Vector r(nc + 1), rt(nc + 1);
   Matrix jac(nc + 1, nu);
@@ -483,7 +483,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     for (int it = 0; it < 100; ++it) {
       ++iterations;
       const Vector step = jac.colPivHouseholderQr().solve(-r);
-      if (!step.allFinite()) return fail("singular Jacobian of (S1), (S2)");
+      if (!step.allFinite()) return fail("singular Jacobian of (G1), (G2)");
       Real mu = 1;
       bool accepted = false;
       blocked = false;
@@ -547,7 +547,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   out.converged = true;
   {
     // The resolution: the collocation points' spacing against the local half width (docs/
-    // theory.md, (S5): (S1) is not elliptic on scales below ~ 3 a, so a finer discretisation
+    // theory.md, (G5): (G1) is not elliptic on scales below ~ 3 a, so a finer discretisation
     // resolves what the line theory does not describe).
     const detail::StaticProfileMatrices<Real> mat(n, 8);
     Real worst = std::numeric_limits<Real>::infinity();
@@ -559,7 +559,7 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     if (!(worst >= 1))
       out.warnings.push_back("the collocation points are " + text(worst) +
                              " half widths apart somewhere (below 1): the discretisation "
-                             "resolves scales below a(y), where (S1) is not elliptic (docs/"
+                             "resolves scales below a(y), where (G1) is not elliptic (docs/"
                              "theory.md, \"Line contact for any roller profile (static)\"); "
                              "lower the terms");
   }
