@@ -26,9 +26,7 @@
 #include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -207,7 +205,7 @@ struct StaticProfileMatrices {
 
 /// The static line contact of `profile` under compliance_load = (1 - nu)/(2 pi mu) * P > 0 (Eq.
 /// (47)), with N = terms coefficients in (G3) (1 <= terms <= 64; the default 12 keeps the points
-/// a few half widths apart for contacts 20 or more half widths long, docs/theory.md (G5)). Throws
+/// more than a half width apart for contacts 15 or more half widths long, docs/theory.md (G5)). Throws
 /// std::invalid_argument
 /// naming the parameter; a Newton iteration that does not converge, or a contact that reaches the
 /// roller's body end, is returned with converged == false, the reason and (for the end) a warning.
