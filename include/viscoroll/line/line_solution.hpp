@@ -7,6 +7,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+#include <algorithm>
+#include <viscoroll/core/along_roller.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/line/line_shape.hpp>
@@ -55,6 +57,31 @@ struct LineSolution {
     using std::abs;
     if (!(abs(y) < shape.l)) return Real(0);
     return strip(y).pressure(x);
+  }
+
+  /// The contact along the roller at `stations` evenly spaced points inside (-l, l) (>= 1):
+  /// the load per unit length F0(y)/((1 + f) c) (Eq. 33 with (47): the strip's pseudo-pressure
+  /// integrates to (1 + f) c times its load), a(y), b(y), the strip's peak pressure (Eq. 35), the
+  /// ends -l, l and the peak of the load (docs/rollers.md).
+  AlongRoller<Real> along_roller(int stations = 65) const {
+    AlongRoller<Real> out;
+    out.y_minus = -shape.l;
+    out.y_plus = shape.l;
+    const Real per_load = compliance * (1 + f);
+    for (int k = 1; k <= std::max(stations, 1); ++k) {
+      const Real y = shape.l * (Real(2 * k) / Real(std::max(stations, 1) + 1) - 1);
+      const auto s = functions(y);
+      out.y.push_back(y);
+      out.f0.push_back(s.f0 / per_load);
+      out.a.push_back(s.a);
+      out.b.push_back(s.b);
+      out.p_max.push_back(strip(y).peak().pressure);
+      if (out.f0.back() > out.f0_max) {
+        out.f0_max = out.f0.back();
+        out.f0_max_y = y;
+      }
+    }
+    return out;
   }
 
   StripFunctions<Real> functions(Real y) const {
