@@ -13,12 +13,14 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
+#include <viscoroll/roller/profile.hpp>
 
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
@@ -41,10 +43,35 @@ void check_scene(const viscoroll::cli::Scene& s) {
   if (const auto* e = std::get_if<EllipsoidProfile>(&s.roller)) {
     require(std::isfinite(e->c1) && e->c1 > 0 && std::isfinite(e->c2) && e->c2 > 0);
     c1 = e->c1;
+  } else if (const auto* cylinder = std::get_if<CylinderProfile>(&s.roller)) {
+    require(std::isfinite(cylinder->radius) && cylinder->radius > 0);
+    c1 = 1 / cylinder->radius;
   } else {
-    const double radius = std::get<CylinderProfile>(s.roller).radius;
-    require(std::isfinite(radius) && radius > 0);
-    c1 = 1 / radius;
+    // A roller of finite length: the reader checked each number; the program builds the
+    // library's profile, which may reject only with std::invalid_argument.
+    std::visit(
+        [&](const auto& r) {
+          using R = std::decay_t<decltype(r)>;
+          if constexpr (!std::is_same_v<R, EllipsoidProfile> && !std::is_same_v<R, CylinderProfile>) {
+            require(std::isfinite(r.radius) && r.radius > 0 && std::abs(r.tilt) < 0.1);
+            c1 = 1 / r.radius;
+            try {
+              if constexpr (std::is_same_v<R, CrownedProfile>)
+                (void)viscoroll::Tilted(viscoroll::CrownedCylinder<double>(
+                                            r.radius, r.flat_length, r.crown_radius, r.length),
+                                        r.tilt);
+              else if constexpr (std::is_same_v<R, LogarithmicProfile>)
+                (void)viscoroll::Tilted(
+                    viscoroll::LogarithmicCrown<double>(r.radius, r.length, r.scale, r.end_drop),
+                    r.tilt);
+              else
+                (void)viscoroll::Tilted(viscoroll::TabulatedProfile<double>(r.radius, r.y, r.h),
+                                        r.tilt);
+            } catch (const std::invalid_argument&) {
+            }
+          }
+        },
+        s.roller);
   }
   if (const auto* m = std::get_if<ElasticModel>(&s.material)) {
     (void)viscoroll::Elastic<double>(m->mu, m->nu);
