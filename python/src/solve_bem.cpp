@@ -22,6 +22,7 @@ class BemSolved final : public Solved {
       if (s_.pressure[q] > s_.pressure[peak]) peak = q;
     const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s_.grid.nx));
     const double pmax = s_.pressure.empty() ? 0.0 : s_.pressure[peak];
+    const auto along = s_.along_roller();
     record_ = {{"method", std::string("bem")},
                {"tau", tau},
                {"speed", speed},
@@ -31,6 +32,8 @@ class BemSolved final : public Solved {
                {"l", s_.l},
                {"y_minus", -s_.l},
                {"y_plus", s_.l},
+               {"f0_max", along.f0_max},
+               {"f0_max_y", along.f0_max_y},
                {"d", s_.d},
                {"a_long_term", s_.long_term.a},
                {"l0", s_.long_term.b},
