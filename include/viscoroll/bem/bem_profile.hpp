@@ -59,8 +59,6 @@ ProfileExtent<typename P::real_type> profile_extent(const P& p,
   using Real = typename P::real_type;
   using std::abs;
   using std::cbrt;
-  using std::log;
-  using std::exp;
   using std::sqrt;
   const Real c1 = p.c1();
   if constexpr (requires { p.c2(); }) {
@@ -150,7 +148,6 @@ BemScene<typename P::real_type> bem_scene(const P& profile, const Material& mate
       .speed = speed,
       .profile =
           [profile, c1, y_min, y_max, inside](Real x, Real y) {
-            using std::abs;
             const Real across = c1 * x * x / 2;
             if (y <= y_min * inside) {
               const Real end = y_min * inside;

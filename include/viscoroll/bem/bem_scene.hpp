@@ -149,6 +149,31 @@ Real edge_offset(Real p_last, Real p_prev) {
   return std::min(a / (b - a), Real(1));
 }
 
+/// The contact of one grid row: its largest pressure and, when that is positive, the trailing
+/// and leading edges of the stretch of contact cells around it, by edge_offset (B12).
+template <RealScalar Real>
+struct RowContact {
+  Real p_max = 0;                 ///< the row's largest pressure (first cell of several)
+  Real trailing = 0, leading = 0;  ///< the edges; both 0 when p_max <= 0
+};
+
+/// RowContact of row j of the cell pressures p on grid g.
+template <RealScalar Real>
+RowContact<Real> row_contact(const BemGrid<Real>& g, const std::vector<Real>& p, int j) {
+  const auto at = [&](int i) { return p[g.index(i, j)]; };
+  int peak = 0;
+  for (int i = 0; i < g.nx; ++i)
+    if (at(i) > at(peak)) peak = i;
+  if (!(at(peak) > 0)) return {};
+  int lead = peak, trail = peak;
+  while (lead + 1 < g.nx && at(lead + 1) > 0) ++lead;
+  while (trail > 0 && at(trail - 1) > 0) --trail;
+  const bool wide = lead > trail;
+  return {.p_max = at(peak),
+          .trailing = g.x(trail) - g.hx * (wide ? edge_offset(at(trail), at(trail + 1)) : Real(1) / 2),
+          .leading = g.x(lead) + g.hx * (wide ? edge_offset(at(lead), at(lead - 1)) : Real(1) / 2)};
+}
+
 }  // namespace bem
 
 /// The boundary-element solution: pressure on the grid, the contact's measures, diagnostics.
@@ -198,27 +223,12 @@ struct BemSolution {
     }
     if (first < 0) return out;
     for (int j = first; j <= last; ++j) {
-      int peak = 0;
-      for (int i = 0; i < grid.nx; ++i)
-        if (at(i, j) > at(peak, j)) peak = i;
+      const auto c = bem::row_contact(grid, pressure, j);
       out.y.push_back(grid.y(j));
       out.f0.push_back(grid.hx * row[static_cast<std::size_t>(j)]);
-      out.p_max.push_back(std::max(at(peak, j), Real(0)));
-      if (!(at(peak, j) > 0)) {
-        out.a.push_back(0);
-        out.b.push_back(0);
-        continue;
-      }
-      int lead = peak, trail = peak;
-      while (lead + 1 < grid.nx && at(lead + 1, j) > 0) ++lead;
-      while (trail > 0 && at(trail - 1, j) > 0) --trail;
-      const bool wide = lead > trail;
-      const Real xl = grid.x(lead) + grid.hx * (wide ? bem::edge_offset(at(lead, j), at(lead - 1, j))
-                                                     : Real(1) / 2);
-      const Real xt = grid.x(trail) - grid.hx * (wide ? bem::edge_offset(at(trail, j), at(trail + 1, j))
-                                                      : Real(1) / 2);
-      out.a.push_back((xl - xt) / 2);
-      out.b.push_back((xl + xt) / 2);
+      out.p_max.push_back(c.p_max);
+      out.a.push_back((c.leading - c.trailing) / 2);
+      out.b.push_back((c.leading + c.trailing) / 2);
     }
     // F0 vanishes linearly at a square-root tip: its zero from the last two rows, within the row
     // beyond (half a row when the rows do not fall towards the end).

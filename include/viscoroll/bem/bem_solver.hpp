@@ -353,20 +353,9 @@ class BemSolver {
   static Edges locate_edges(const BemGrid<Real>& g, const std::vector<Real>& p) {
     const auto at = [&](int i, int j) { return p[g.index(i, j)]; };
     const int j0 = (g.ny - 1) / 2;
-    int imax = 0;
-    for (int i = 0; i < g.nx; ++i)
-      if (at(i, j0) > at(imax, j0)) imax = i;
-    if (!(at(imax, j0) > 0)) {
-      return {Real(0), Real(0), Real(0)};
-    }
-    int lead = imax, trail = imax;
-    while (lead + 1 < g.nx && at(lead + 1, j0) > 0) ++lead;
-    while (trail > 0 && at(trail - 1, j0) > 0) --trail;
-    const Real xl = g.x(lead) + g.hx * (lead > trail ? bem::edge_offset(at(lead, j0), at(lead - 1, j0))
-                                                     : Real(1) / 2);
-    const Real xt =
-        g.x(trail) -
-        g.hx * (lead > trail ? bem::edge_offset(at(trail, j0), at(trail + 1, j0)) : Real(1) / 2);
+    const auto centre = bem::row_contact(g, p, j0);
+    if (!(centre.p_max > 0)) return {Real(0), Real(0), Real(0)};
+    const Real xl = centre.leading, xt = centre.trailing;
     // l: the row loads F0(y_j) = hx sum_i p vanish linearly in y^2 at an elliptic tip (exactly
     // so for Hertz, (B12)); extrapolate the last two loaded rows to zero.
     std::vector<Real> row(static_cast<std::size_t>(g.ny), Real(0));
