@@ -242,10 +242,9 @@ class Output {
 
   /// Keeps the contact along the roller of a bem solve for --profile-out (one row per grid row
   /// of the contact; tau or the temperature empty when not the sweep's variable).
-  template <class Solution>
-  void add_profile(double tau, double temperature, double speed, const Solution& s) {
+  void add_profile(double tau, double temperature, double speed,
+                   const viscoroll::AlongRoller<double>& along) {
     if (!profile_csv_.is_open()) return;
-    const auto along = s.along_roller();
     const auto number = [](double x) {
       return std::isnan(x) ? std::string() : viscoroll::cli::scene_detail::shortest(x);
     };
@@ -828,12 +827,12 @@ int bem_grid(const Problem& p) {
 /// `axial`: a roller of finite length, whose contact's ends are along_roller()'s (the
 /// ellipsoid's are -l, l of (B12)).
 template <class Solution>
-Record bem_record(Record head, const Solution& s, double seconds, int grid, bool axial) {
+Record bem_record(Record head, const Solution& s, const viscoroll::AlongRoller<double>& along,
+                  double seconds, int grid, bool axial) {
   std::size_t peak = 0;
   for (std::size_t q = 0; q < s.pressure.size(); ++q)
     if (s.pressure[q] > s.pressure[peak]) peak = q;
   const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
-  const auto along = s.along_roller();
   Record tail = {{"a0", s.a0},
                  {"b0", s.b0},
                  {"l", s.l},
@@ -912,24 +911,26 @@ int run_bem(const Problem& p, Output& out) {
         },
         [&](double temperature, const auto& scene, const auto& s, double seconds) {
           const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
+          const auto along = s.along_roller();
           out.add(bem_record({{"method", std::string("bem")},
                               {"temperature", temperature},
                               {"a_T", a_t},
                               {"speed", scene.speed}},
-                             s, seconds, options.grid, axial));
-          out.add_profile(std::nan(""), temperature, scene.speed, s);
+                             s, along, seconds, options.grid, axial));
+          out.add_profile(std::nan(""), temperature, scene.speed, along);
           note_outcome(out, "bem", temperature_label(p, temperature, scene.speed), s);
         });
   return run_sweeps(
       p, p.tau, out, scene_at,
       [&](double tau) { return viscoroll::BemSolverD(material(p, tau), options); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
+        const auto along = s.along_roller();
         out.add(bem_record({{"method", std::string("bem")},
                             {"tau", tau},
                             {"speed", scene.speed},
                             {"vtau", scene.speed * tau}},
-                           s, seconds, options.grid, axial));
-        out.add_profile(tau, std::nan(""), scene.speed, s);
+                           s, along, seconds, options.grid, axial));
+        out.add_profile(tau, std::nan(""), scene.speed, along);
         note_outcome(out, "bem", label(p, tau, scene.speed), s);
       });
 }
