@@ -120,12 +120,6 @@ struct Scene {
   std::vector<double> temperatures;
 };
 
-/// The message for a prony material with the command line's line method (the library's LineSolver takes a spectrum; this tool does not wire it yet).
-inline std::string prony_needs_bem() {
-  return "material.model 'prony': the line solver takes one relaxation time so far; use "
-         "--method plane or --method bem";
-}
-
 /// The largest scene file read, in bytes.
 inline constexpr std::size_t max_scene_bytes = std::size_t(1) << 20;
 
@@ -678,8 +672,6 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
     throw std::invalid_argument("viscoroll-solve: " + source + ": " + message);
   };
   const std::string m = method_name(method);
-  if (std::holds_alternative<PronyModel>(scene.material) && method == Method::line)
-    fail(prony_needs_bem());
   if (is_axial_profile(scene.roller) && method != Method::bem)
     fail("roller.profile = \"" + roller_profile_name(scene.roller) +
          "\" suits the bem method only, not " + m +

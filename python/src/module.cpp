@@ -217,10 +217,11 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
           out.material = {true, m.mu, m.nu, 0.0, 0.0};
         } else if constexpr (std::is_same_v<M, cli::PronyModel>) {
           // The bindings solve one relaxation time so far (for every method); the command
-          // line's bem method takes a prony material.
-          throw std::invalid_argument(source + ": " + cli::prony_needs_bem() +
-                                      " (the command line viscoroll-solve; the Python bindings "
-                                      "do not take a prony material yet)");
+          // line's methods all take a prony material.
+          throw std::invalid_argument(
+              source +
+              ": material.model 'prony': the Python bindings take one relaxation time so far; "
+              "solve it with viscoroll-solve (every --method takes it)");
         } else {
           static_assert(std::is_same_v<M, cli::StandardLinearSolidModel>);
           out.material = {false, m.mu_d, m.nu, m.f, m.tau};

@@ -113,9 +113,10 @@ def test_from_json_file_errors(tmp_path):
 
 
 @pytest.mark.parametrize("method", [None, "plane", "line", "bem"])
-def test_from_json_of_a_prony_scene_raises_the_command_lines_message(tmp_path, method):
-    """A prony material (several relaxation times) is the command line's bem method's; the
-    bindings raise ValueError with the command line's message, whatever the method."""
+def test_from_json_of_a_prony_scene_raises_and_points_to_the_command_line(tmp_path, method):
+    """A prony material (several relaxation times) is the command line's (every method); the
+    bindings raise ValueError naming the key and pointing to viscoroll-solve, whatever the
+    method."""
     document = json.loads(json.dumps(GOOD))
     document["material"] = {"model": "prony", "nu": 0.5, "g_inf": 1.0e6,
                             "terms": [{"g": 2.0e6, "tau": 1e-3}, {"g": 5.0e5, "tau": 1e-1}],
@@ -130,8 +131,8 @@ def test_from_json_of_a_prony_scene_raises_the_command_lines_message(tmp_path, m
         vr.Scene.from_json(path)
     message = str(error.value)
     assert message.startswith(str(path) + ": ")
-    assert ("material.model 'prony': the line solver takes one relaxation time so far; "
-            "use --method plane or --method bem") in message
+    assert ("material.model 'prony': the Python bindings take one relaxation time so far; "
+            "solve it with viscoroll-solve (every --method takes it)") in message
 
 
 def test_from_json_of_the_shipped_prony_scene_raises(scenes_dir):
