@@ -66,3 +66,32 @@ TEST_CASE("bem: a twenty-term table is the sum of its one-term tables", "[bem]")
   INFO("largest relative difference " << worst);
   CHECK(worst <= 1e-12);
 }
+
+TEST_CASE("bem: the row |Y| = hy/2 through the cells' corners is graded as its neighbours",
+          "[bem]") {
+  // At |Y| = hy/2 the row passes through the corners of the cell, where K_e has a logarithmic
+  // y-derivative; the grading (B4) must be the full one of the rows inside (it read
+  // log(hx/0) there before). K_e and so M_L are continuous in Y with modulus d ln(1/d): rows at
+  // hy/2 (1 -+ 1e-12) differ from it by about 1e-12 * 28 relative, so 1e-10 is the bound, far
+  // under what an ungraded kink leaves.
+  const double hx = 0.1, hy = 0.06;
+  const int m = 6;
+  for (const double length : {hx / 8, hx, 10 * hx}) {
+    const auto at = memory_row(m, hy / 2, hx, hy, length);
+    const auto below = memory_row(m, hy / 2 * (1 - 1e-12), hx, hy, length);
+    const auto above = memory_row(m, hy / 2 * (1 + 1e-12), hx, hy, length);
+    const MemoryRows<double> shared(m, hx, hy, {length});
+    const auto row = shared(hy / 2).front();
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      INFO("L/hx = " << length / hx << ", i = " << int(i) - m);
+      REQUIRE(std::isfinite(at[i]));
+      CHECK(std::abs(at[i] - below[i]) <= 1e-10 * std::abs(at[i]));
+      CHECK(std::abs(at[i] - above[i]) <= 1e-10 * std::abs(at[i]));
+      CHECK(std::abs(row[i] - at[i]) <= 1e-13 * std::abs(at[i]));
+    }
+  }
+  CHECK(viscoroll::bem::kink_grading_depth(hy / 2, hx, hy) == 53);
+  CHECK(viscoroll::bem::kink_grading_depth(std::nextafter(hy / 2, 1.0), hx, hy) == 53);
+  CHECK(viscoroll::bem::kink_grading_depth(hy / 2 + hx / 4, hx, hy) == 4);
+  CHECK(viscoroll::bem::kink_grading_depth(hy / 2 + hx, hx, hy) == 0);
+}

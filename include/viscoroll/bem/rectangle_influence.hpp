@@ -159,6 +159,22 @@ Real rectangle_influence(Real x, Real y, Real hx, Real hy) {
          (hx * hy / 4);
 }
 
+/// The grading depth of (B4) towards the kinks s = +-hx/2 of row Y: a row |Y| <= hy/2 carries a
+/// u ln|u| kink (graded to the scalar's last bit); a row |Y| > hy/2 is analytic within
+/// |Y| - hy/2 of the kink, which matters only when that gap is below hx: ceil(log2(hx/gap)) + 2
+/// levels, at most the scalar's digits (a gap of a few ulps would ask for a thousand).
+template <RealScalar Real>
+int kink_grading_depth(Real y, Real hx, Real hy) {
+  using std::abs;
+  using std::log;
+  constexpr int full = std::numeric_limits<Real>::digits;
+  const Real gap = abs(y) - hy / 2;
+  if (!(gap > 0)) return full;
+  if (!(gap < hx)) return 0;
+  const double levels = std::ceil(static_cast<double>(log(hx / gap) / log(Real(2)))) + 2;
+  return levels < full ? static_cast<int>(levels) : full;
+}
+
 /// (B4), (B5): the memory coefficients M_L(X_i, Y) of (B3) for X_i = i hx, i = -m .. m, at one Y,
 /// for L > 0, each panel integrated by the rule Quadrature. Returns 2m + 1 values, index i + m.
 /// L = 0 gives K_e itself (the limit of (B3)).
@@ -178,16 +194,7 @@ requires NodalQuadratureRule<Quadrature, Real> std::vector<Real> memory_row(int 
   const Real L = length;
   const Real eps = std::numeric_limits<Real>::epsilon();
   const Real u_max = -log(eps) + 6;  // e^(-u_max) < eps / 400: the weight beyond is negligible
-  // Grading depth towards the kinks s = +-hx/2 (B4): the row Y = 0 carries a u ln|u| kink; a row
-  // |Y| > hy/2 is analytic within |Y| - hy/2 of the kink, which matters only when that is < hx.
-  int depth = 0;
-  if (abs(y) < hy / 2) {
-    depth = std::numeric_limits<Real>::digits;
-  } else {
-    const Real gap = abs(y) - hy / 2;
-    if (gap < hx)
-      depth = static_cast<int>(std::ceil(static_cast<double>(log(hx / gap) / log(Real(2))))) + 2;
-  }
+  const int depth = kink_grading_depth(y, hx, hy);
   const auto& gx = Quadrature::nodes();
   const auto& gw = Quadrature::weights();
   const auto panel = [&](Real a, Real b, Real origin) {
@@ -304,15 +311,7 @@ class MemoryRows {
     std::vector<std::vector<Real>> out(nt, std::vector<Real>(width));
     const Real hx = hx_, hy = hy_;
     const auto ke = [&](Real s) { return rectangle_influence(s, y, hx, hy); };
-    // The kinks' grading depth, as memory_row.
-    int depth = 0;
-    if (abs(y) < hy / 2) {
-      depth = std::numeric_limits<Real>::digits;
-    } else {
-      const Real gap = abs(y) - hy / 2;
-      if (gap < hx)
-        depth = static_cast<int>(std::ceil(static_cast<double>(log(hx / gap) / log(Real(2))))) + 2;
-    }
+    const int depth = kink_grading_depth(y, hx, hy);  // as memory_row
     std::vector<Real> values(std::max(step_.node.size(), tail_.node.size())), sums(nt);
     // sums[t] = sum over the nodes of weight[t][q] K_e(origin + node[q]).
     const auto combine = [&](const Panels& p, const std::vector<Real>& weight, Real origin) {
