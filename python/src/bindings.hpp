@@ -14,7 +14,10 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <limits>
 #include <vector>
+#include <viscoroll/material/prony.hpp>
+#include <viscoroll/material/temperature_shift.hpp>
 #include <viscoroll/sweep.hpp>
 
 #include "cli/solve_options.hpp"
@@ -25,10 +28,19 @@ namespace viscoroll::python {
 using cli::Method;
 using cli::method_name;
 
-/// A material: the standard linear solid of Eq. (1), or elastic (mu = mu_d, f = tau = 0).
+/// A Prony series in relaxation form (docs/materials.md) at its reference temperature, and its
+/// optional time-temperature shift.
+struct PronySpec {
+  PronyRelaxation<double> reference;
+  std::optional<ShiftLaw<double>> shift;
+};
+
+/// A material: the standard linear solid of Eq. (1), elastic (mu = mu_d, f = tau = 0), or a
+/// Prony series (`prony` set; mu_d its glassy modulus, nu its Poisson's ratio).
 struct MaterialSpec {
   bool elastic = false;
   double mu_d = 0, nu = 0, f = 0, tau = 0;
+  std::shared_ptr<const PronySpec> prony;
 };
 
 /// A roller: the paper's ellipsoid (c1, c2) or a cylinder of `radius` (plane only, c1 = 1/radius).
@@ -47,12 +59,54 @@ struct SceneSpec {
   std::optional<long> grid;
   std::string description;
   std::string source = "Scene";  ///< starts the messages of method-dependent checks
+  /// A Prony material's temperature (degrees Celsius): its shift law's t_ref by default; NaN
+  /// without a shift law (the material is its reference).
+  double temperature = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// The Prony material of a scene at its temperature: every time times a_T (at_temperature).
+inline PronyRelaxation<double> prony_at(const SceneSpec& scene) {
+  const auto& p = *scene.material.prony;
+  return p.shift ? at_temperature(p.reference, *p.shift, scene.temperature) : p.reference;
+}
+
+/// a_T of the scene's temperature (1 without a shift law).
+inline double shift_factor_of(const SceneSpec& scene) {
+  const auto& p = *scene.material.prony;
+  return p.shift ? shift_factor(*p.shift, scene.temperature) : 1.0;
+}
 
 /// One output field: the command line's JSON value types.
 using Value = std::variant<double, long long, bool, std::string, std::vector<std::string>>;
 /// The command line's JSON fields of one solution, in its order (docs/cli.md, "Output").
 using Record = std::vector<std::pair<std::string, Value>>;
+
+/// What a record says of the material, as the command line: tau and V tau, or a Prony
+/// material's temperature and a_T.
+struct MaterialKeys {
+  bool prony = false;
+  double tau = 0, temperature = 0, a_t = 1;
+
+  static MaterialKeys of(const SceneSpec& scene) {
+    if (!scene.material.prony) return {false, scene.material.tau, 0, 1};
+    return {true, 0, scene.temperature, shift_factor_of(scene)};
+  }
+  /// The record's first fields: method, then tau, speed, vtau or temperature, a_T, speed.
+  Record head(const char* method, double speed) const {
+    if (prony)
+      return {{"method", std::string(method)},
+              {"temperature", temperature},
+              {"a_T", a_t},
+              {"speed", speed}};
+    return {{"method", std::string(method)}, {"tau", tau}, {"speed", speed}, {"vtau", speed * tau}};
+  }
+};
+
+/// `head` followed by `tail`.
+inline Record joined(Record head, const Record& tail) {
+  head.insert(head.end(), tail.begin(), tail.end());
+  return head;
+}
 
 /// One solution of any method: its fields and its functions of position.
 class Solved {
@@ -86,9 +140,9 @@ class Solved {
 using SolvedPtr = std::shared_ptr<const Solved>;
 
 /// The solver's discretisation for `method` from the scene's or the caller's grid: line terms
-/// (1..64, default 6), bem elements per semi-axis (2..512, default 16); throws
-/// std::invalid_argument naming `grid`.
-int discretisation(Method method, std::optional<long> grid);
+/// (1..64, default 6; 4 for a Prony material, as the command line), bem elements per semi-axis
+/// (2..512, default 16); throws std::invalid_argument naming `grid`.
+int discretisation(Method method, std::optional<long> grid, bool prony);
 
 /// Seconds since `start`.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -130,24 +184,24 @@ struct TimedSolver {
 };
 
 /// One solve of a seeded method (line: SolvedT = LineSolved; bem: BemSolved), timed; `start`
-/// must be a result of the same method. SolvedT is constructed from (solution, tau, speed, grid,
-/// seconds).
+/// must be a result of the same method and solution type. SolvedT is constructed from
+/// (solution, keys, speed, grid, seconds).
 template <class SolvedT, class Solver, class Scene>
 SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, const Solved* start,
-                       double tau, int grid) {
+                       const MaterialKeys& keys, int grid) {
   const typename Solver::Solution* seed = nullptr;
   if (start) {
     const auto* same = dynamic_cast<const SolvedT*>(start);
     if (!same)
       throw std::invalid_argument(std::string("viscoroll: start must be a result of the ") +
-                                  method_name(method) + " method, got " +
+                                  method_name(method) + " method for this kind of material, got " +
                                   method_name(start->method()));
     seed = &same->solution();
   }
   const auto t0 = std::chrono::steady_clock::now();
   auto s = solver.solve(at, seed);
   const double seconds = seconds_since(t0);
-  return std::make_shared<SolvedT>(std::move(s), tau, at.speed, grid, seconds);
+  return std::make_shared<SolvedT>(std::move(s), keys, at.speed, grid, seconds);
 }
 
 /// viscoroll::sweep over `speeds` from the scene `at` (its speed replaced); `make` builds each
@@ -167,12 +221,12 @@ std::vector<SolvedPtr> sweep_timed(const Solver& solver, const Scene& at,
 /// sweep_timed for a seeded method (line: SolvedT = LineSolved; bem: BemSolved).
 template <class SolvedT, class Solver, class Scene>
 std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
-                                    std::span<const double> speeds, double tau, int grid,
-                                    const SweepOptions& options) {
+                                    std::span<const double> speeds, const MaterialKeys& keys,
+                                    int grid, const SweepOptions& options) {
   return sweep_timed(
       solver, at, speeds,
-      [tau, grid](const typename Solver::Solution& s, double speed, double seconds) -> SolvedPtr {
-        return std::make_shared<SolvedT>(s, tau, speed, grid, seconds);
+      [keys, grid](const typename Solver::Solution& s, double speed, double seconds) -> SolvedPtr {
+        return std::make_shared<SolvedT>(s, keys, speed, grid, seconds);
       },
       options);
 }

@@ -17,7 +17,9 @@
 #include <utility>
 #include <variant>
 #include <vector>
+#include <filesystem>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/material/dma_fit.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
@@ -33,9 +35,9 @@ namespace py = pybind11;
 
 namespace viscoroll::python {
 
-int discretisation(Method method, std::optional<long> grid) {
+int discretisation(Method method, std::optional<long> grid, bool prony) {
   if (method == Method::line) {
-    const long n = grid.value_or(6);
+    const long n = grid.value_or(prony ? 4 : 6);
     if (n < 1 || n > 64)
       throw std::invalid_argument(
           "viscoroll: grid = " + std::to_string(n) +
@@ -59,28 +61,30 @@ int discretisation(Method method, std::optional<long> grid) {
 
 namespace {
 
+using PlaneSpectrumSolver = viscoroll::PlaneSolver<double, PronyRelaxation<double>>;
 using PlaneSolver = PlaneSolverD;
-using PlaneSolution = PlaneSolver::Solution;
 
+/// A plane solution of either material (PlaneSolution, PlaneSpectrumSolution: the same fields,
+/// the spectrum's with active_terms).
+template <class Solution>
 class PlaneSolved final : public Solved {
  public:
-  PlaneSolved(PlaneSolution s, double tau, double speed, double seconds)
+  PlaneSolved(Solution s, const MaterialKeys& keys, double speed, double seconds)
       : Solved(Method::plane), s_(std::move(s)) {
     const auto peak = s_.peak();
-    record_ = {{"method", std::string("plane")},
-               {"tau", tau},
-               {"speed", speed},
-               {"vtau", speed * tau},
-               {"a0", s_.a},
-               {"b0", s_.b},
-               {"a_long_term", s_.a_long_term},
-               {"chi", s_.chi},
-               {"pmax", peak.pressure},
-               {"pmax_x", peak.x},
-               {"seconds", seconds},
-               {"converged", s_.converged},
-               {"iterations", static_cast<long long>(s_.iterations)},
-               {"residual", s_.residual}};
+    Record fields = {{"a0", s_.a},
+                     {"b0", s_.b},
+                     {"a_long_term", s_.a_long_term},
+                     {"chi", s_.chi},
+                     {"pmax", peak.pressure},
+                     {"pmax_x", peak.x}};
+    if constexpr (requires { s_.active_terms; })
+      fields.emplace_back("active_terms", static_cast<long long>(s_.active_terms));
+    record_ = joined(joined(keys.head("plane", speed), fields),
+                     {{"seconds", seconds},
+                      {"converged", s_.converged},
+                      {"iterations", static_cast<long long>(s_.iterations)},
+                      {"residual", s_.residual}});
   }
   double pressure(double x, double) const override { return s_.pressure(x); }
   double a(double) const override { return s_.a; }
@@ -88,13 +92,8 @@ class PlaneSolved final : public Solved {
   double f0(double) const override { return s_.f0; }
 
  private:
-  PlaneSolution s_;
+  Solution s_;
 };
-
-PlaneSolver make_plane_solver(const SceneSpec& scene) {
-  const auto& m = scene.material;
-  return PlaneSolver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau));
-}
 
 PlaneScene<double> plane_scene(const SceneSpec& scene, double speed) {
   PlaneScene<double> s{.c1 = scene.roller.c1, .load = scene.load, .speed = speed};
@@ -102,29 +101,50 @@ PlaneScene<double> plane_scene(const SceneSpec& scene, double speed) {
   return s;
 }
 
+template <class Solver>
+SolvedPtr solve_plane_with(const Solver& solver, const SceneSpec& scene, double speed) {
+  const PlaneScene<double> at = plane_scene(scene, speed);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto s = solver.solve(at);
+  const double seconds = seconds_since(t0);
+  return std::make_shared<PlaneSolved<typename Solver::Solution>>(
+      std::move(s), MaterialKeys::of(scene), speed, seconds);
+}
+
+template <class Solver>
+std::vector<SolvedPtr> sweep_plane_with(const Solver& solver, const SceneSpec& scene,
+                                        std::span<const double> speeds,
+                                        const SweepOptions& options) {
+  const PlaneScene<double> at = plane_scene(scene, 0.0);
+  for (const double v : speeds) plane_scene(scene, v);
+  const auto keys = MaterialKeys::of(scene);
+  using Solution = typename Solver::Solution;
+  return sweep_timed(
+      solver, at, speeds,
+      [keys](const Solution& s, double speed, double seconds) -> SolvedPtr {
+        return std::make_shared<PlaneSolved<Solution>>(s, keys, speed, seconds);
+      },
+      options);
+}
+
+PlaneSolver make_plane_solver(const SceneSpec& scene) {
+  const auto& m = scene.material;
+  return PlaneSolver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau));
+}
+
 }  // namespace
 
 SolvedPtr solve_plane(const SceneSpec& scene, double speed) {
-  const PlaneSolver solver = make_plane_solver(scene);
-  const PlaneScene<double> at = plane_scene(scene, speed);
-  const auto t0 = std::chrono::steady_clock::now();
-  PlaneSolution s = solver.solve(at);
-  const double seconds = seconds_since(t0);
-  return std::make_shared<PlaneSolved>(std::move(s), scene.material.tau, speed, seconds);
+  if (scene.material.prony)
+    return solve_plane_with(PlaneSpectrumSolver(prony_at(scene)), scene, speed);
+  return solve_plane_with(make_plane_solver(scene), scene, speed);
 }
 
 std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
                                    const SweepOptions& options) {
-  const PlaneSolver solver = make_plane_solver(scene);
-  const PlaneScene<double> at = plane_scene(scene, 0.0);
-  for (const double v : speeds) plane_scene(scene, v);
-  const double tau = scene.material.tau;
-  return sweep_timed(
-      solver, at, speeds,
-      [tau](const PlaneSolution& s, double speed, double seconds) -> SolvedPtr {
-        return std::make_shared<PlaneSolved>(s, tau, speed, seconds);
-      },
-      options);
+  if (scene.material.prony)
+    return sweep_plane_with(PlaneSpectrumSolver(prony_at(scene)), scene, speeds, options);
+  return sweep_plane_with(make_plane_solver(scene), scene, speeds, options);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -137,6 +157,14 @@ struct Material {
 };
 struct StandardLinearSolidMaterial : Material {};
 struct ElasticMaterial : Material {};
+struct PronyMaterial : Material {};
+
+/// A time-temperature shift law (WLF or Arrhenius).
+struct Shift {
+  ShiftLaw<double> law;
+};
+struct WlfShiftObject : Shift {};
+struct ArrheniusShiftObject : Shift {};
 
 struct Roller {
   RollerSpec spec;
@@ -205,7 +233,79 @@ int check_for_method(const SceneSpec& scene, Method method, std::optional<long> 
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(reader_message(e.what()));
   }
-  return discretisation(method, grid ? grid : scene.grid);
+  return discretisation(method, grid ? grid : scene.grid, bool(scene.material.prony));
+}
+
+std::optional<ShiftLaw<double>> shift_from_cli(const std::optional<cli::ShiftSpec>& shift) {
+  if (!shift) return std::nullopt;
+  if (shift->law == "wlf") return WlfShift<double>(shift->c1, shift->c2, shift->t_ref);
+  return ArrheniusShift<double>(shift->activation_energy, shift->t_ref);
+}
+
+/// A material spec of a Prony series with its shift law (validated by the library).
+MaterialSpec prony_spec(PronyRelaxation<double> reference, std::optional<ShiftLaw<double>> shift) {
+  MaterialSpec out;
+  out.mu_d = reference.glassy_modulus();
+  out.nu = reference.nu();
+  out.prony = std::make_shared<const PronySpec>(PronySpec{std::move(reference), std::move(shift)});
+  return out;
+}
+
+/// A scene file's prony material: its terms, or the fit of its DMA file (relative to the scene
+/// file's directory; a poor fit is a Python warning, as the command line's on stderr).
+MaterialSpec prony_from_cli(const cli::PronyModel& m, const std::string& source) {
+  const auto fail = [&](const std::string& message) {
+    throw std::invalid_argument(source + ": " + message);
+  };
+  const auto shift = shift_from_cli(m.shift);
+  if (m.dma.empty()) {
+    std::vector<RelaxationTerm<double>> terms;
+    for (const auto& t : m.terms) terms.push_back({t.g, t.tau});
+    try {
+      return prony_spec(PronyRelaxation<double>(m.g_inf, m.nu, std::move(terms)), shift);
+    } catch (const std::invalid_argument& e) {
+      fail(std::string("material: ") + e.what());
+    }
+  }
+  std::filesystem::path path(m.dma);
+  if (path.is_relative())
+    path = (std::filesystem::path(source).parent_path() / path).lexically_normal();
+  try {
+    const auto data = read_dma_csv_file<double>(path);
+    if (data.has_temperature && !shift)
+      fail("material.dma = \"" + m.dma +
+           "\" has a temperature_c column: give material.shift (wlf or arrhenius) to build the "
+           "master curve");
+    DmaFitOptions<double> options;
+    options.nu = m.nu;
+    options.shift = shift;
+    auto fit = fit_prony(data, options);
+    if (fit.report.poor)
+      py::module_::import("warnings")
+          .attr("warn")("viscoroll: material.dma = " + path.string() +
+                        ": a poor fit of the DMA data (" + fit.report.summary +
+                        "); the solutions are of the fitted spectrum");
+    return prony_spec(std::move(fit.material), shift);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    if (what.starts_with(source + ": ")) throw;
+    fail("material.dma = \"" + m.dma + "\": " + what);
+  }
+  throw std::logic_error("unreachable");
+}
+
+/// Sets the scene's temperature: `given` (the caller's), else the law's t_ref; NaN without a
+/// law. A temperature needs a Prony material with a shift law; it is checked against the law's
+/// range (ValueError naming temperature).
+void set_temperature(SceneSpec& s, std::optional<double> given) {
+  const auto* prony = s.material.prony.get();
+  if (given && !(prony && prony->shift))
+    throw std::invalid_argument(
+        "viscoroll: temperature is valid only with a Prony material with a shift law (WLF or "
+        "Arrhenius)");
+  if (!prony || !prony->shift) return;
+  s.temperature = given ? *given : reference_temperature(*prony->shift);
+  shift_factor(*prony->shift, s.temperature);  // validates
 }
 
 SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
@@ -214,17 +314,12 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
       [&](const auto& m) {
         using M = std::decay_t<decltype(m)>;
         if constexpr (std::is_same_v<M, cli::ElasticModel>) {
-          out.material = {true, m.mu, m.nu, 0.0, 0.0};
+          out.material = {true, m.mu, m.nu, 0.0, 0.0, nullptr};
         } else if constexpr (std::is_same_v<M, cli::PronyModel>) {
-          // The bindings solve one relaxation time so far (for every method); the command
-          // line's methods all take a prony material.
-          throw std::invalid_argument(
-              source +
-              ": material.model 'prony': the Python bindings take one relaxation time so far; "
-              "solve it with viscoroll-solve (every --method takes it)");
+          out.material = prony_from_cli(m, source);
         } else {
           static_assert(std::is_same_v<M, cli::StandardLinearSolidModel>);
-          out.material = {false, m.mu_d, m.nu, m.f, m.tau};
+          out.material = {false, m.mu_d, m.nu, m.f, m.tau, nullptr};
         }
       },
       in.material);
@@ -327,9 +422,13 @@ py::dict to_columns(const std::vector<SolvedPtr>& solved) {
 const std::vector<std::pair<const char*, const char*>>& field_docs() {
   static const std::vector<std::pair<const char*, const char*>> docs = {
       {"method", "'plane', 'line' or 'bem'."},
-      {"tau", "Relaxation time (0 for an elastic material)."},
+      {"tau", "Relaxation time (0 for an elastic material); not with a Prony material."},
+      {"temperature", "Prony material: the temperature (degrees Celsius; nan without a shift)."},
+      {"a_T", "Prony material: the shift factor a_T at that temperature (1 at t_ref)."},
+      {"active_terms",
+       "Prony material, plane and line: retardation terms neither relaxed nor glassy at V."},
       {"speed", "Rolling speed V."},
-      {"vtau", "V tau, the memory length."},
+      {"vtau", "V tau, the memory length; not with a Prony material."},
       {"a0", "Half width of the contact at y = 0."},
       {"b0", "Offset of the contact's centre at y = 0 ahead of the roller's axis."},
       {"l", "Half length of the contact along the roller's axis (line, bem)."},
@@ -342,8 +441,8 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"l0", "l of the static long-term contact (line, bem)."},
       {"d0", "d of the static long-term contact (line, bem)."},
       {"chi", "Rolling-friction coefficient (Eq. 51/54)."},
-      {"pmax", "Peak pressure on y = 0."},
-      {"pmax_x", "Where the peak pressure on y = 0 is."},
+      {"pmax", "Peak pressure on y = 0 (not line with a Prony material)."},
+      {"pmax_x", "Where the peak pressure on y = 0 is (not line with a Prony material)."},
       {"seconds", "Run time of this solve (s)."},
       {"converged", "The iteration met its tolerance (nothing is claimed otherwise)."},
       {"root",
@@ -360,7 +459,25 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
   return docs;
 }
 
+std::string shift_repr(const ShiftLaw<double>& law) {
+  if (const auto* w = std::get_if<WlfShift<double>>(&law))
+    return "WLF(c1=" + shortest(w->c1()) + ", c2=" + shortest(w->c2()) +
+           ", t_ref=" + shortest(w->t_ref()) + ")";
+  const auto& a = std::get<ArrheniusShift<double>>(law);
+  return "Arrhenius(activation_energy=" + shortest(a.activation_energy()) +
+         ", t_ref=" + shortest(a.t_ref()) + ")";
+}
+
 std::string material_repr(const MaterialSpec& m) {
+  if (m.prony) {
+    const auto& r = m.prony->reference;
+    std::string out = "Prony(g_inf=" + shortest(r.g_inf()) + ", nu=" + shortest(r.nu()) + ", terms=[";
+    for (std::size_t i = 0; i < r.terms().size(); ++i)
+      out += (i ? ", (" : "(") + shortest(r.terms()[i].g) + ", " + shortest(r.terms()[i].rho) + ")";
+    out += "]";
+    if (m.prony->shift) out += ", shift=" + shift_repr(*m.prony->shift);
+    return out + ")";
+  }
   if (m.elastic) return "Elastic(mu=" + shortest(m.mu_d) + ", nu=" + shortest(m.nu) + ")";
   return "StandardLinearSolid(mu_d=" + shortest(m.mu_d) + ", nu=" + shortest(m.nu) +
          ", f=" + shortest(m.f) + ", tau=" + shortest(m.tau) + ")";
@@ -372,8 +489,23 @@ std::string roller_repr(const RollerSpec& r) {
 }
 
 py::object material_object(const MaterialSpec& m) {
+  if (m.prony) return py::cast(PronyMaterial{{m}});
   if (m.elastic) return py::cast(ElasticMaterial{{m}});
   return py::cast(StandardLinearSolidMaterial{{m}});
+}
+
+py::object shift_object(const ShiftLaw<double>& law) {
+  if (std::holds_alternative<WlfShift<double>>(law)) return py::cast(WlfShiftObject{{law}});
+  return py::cast(ArrheniusShiftObject{{law}});
+}
+
+/// The compliances of any material spec (the library's values).
+double compliance(const MaterialSpec& m, bool long_term) {
+  if (m.prony)
+    return long_term ? m.prony->reference.long_term_compliance()
+                     : m.prony->reference.instantaneous_compliance();
+  const StandardLinearSolid<double> sls(m.mu_d, m.nu, m.f, m.tau);
+  return long_term ? sls.long_term_compliance() : sls.instantaneous_compliance();
 }
 
 py::object roller_object(const RollerSpec& r) {
@@ -397,8 +529,8 @@ method : {"line", "plane", "bem"}, optional
     file's "method"), else "plane" for a Cylinder and "line" for an Ellipsoid.
 grid : int, optional
     Discretisation, as viscoroll-solve --grid: line, Chebyshev terms of ln a(y), 1..64
-    (default 6); bem, elements per semi-axis of the static long-term Hertz ellipse, 2..512
-    (default 16); ignored by plane. Default: the scene's grid, else those defaults.
+    (default 6; 4 for a Prony material); bem, elements per semi-axis of the static long-term
+    Hertz ellipse, 2..512 (default 16); ignored by plane. Default: the scene's grid, else those defaults.
 speed : float, optional
     Rolling speed >= 0. Default: the scene's only speed (a ValueError if it has none or
     several; use sweep() for several).
@@ -486,21 +618,13 @@ PYBIND11_MODULE(_viscoroll, m) {
           "nu", [](const vp::Material& s) { return s.spec.nu; }, "Poisson's ratio.")
       .def_property_readonly(
           "instantaneous_compliance",
-          [](const vp::Material& s) {
-            return viscoroll::StandardLinearSolid<double>(s.spec.mu_d, s.spec.nu, s.spec.f,
-                                                          s.spec.tau)
-                .instantaneous_compliance();
-          },
-          "c = (1 - nu)/(2 pi mu_d), the factor of the Boussinesq equation (the library's "
-          "value).")
+          [](const vp::Material& s) { return compliance(s.spec, false); },
+          "c = (1 - nu)/(2 pi mu_d), the factor of the Boussinesq equation (mu_d the glassy "
+          "modulus; the library's value).")
       .def_property_readonly(
-          "long_term_compliance",
-          [](const vp::Material& s) {
-            return viscoroll::StandardLinearSolid<double>(s.spec.mu_d, s.spec.nu, s.spec.f,
-                                                          s.spec.tau)
-                .long_term_compliance();
-          },
-          "(1 + f) c, the compliance under a load held for t >> tau.")
+          "long_term_compliance", [](const vp::Material& s) { return compliance(s.spec, true); },
+          "(1 + f) c (a Prony series: (1 + sum f_k) c), the compliance under a load held for "
+          "long.")
       .def("__repr__", [](const vp::Material& s) { return material_repr(s.spec); });
 
   py::class_<StandardLinearSolidMaterial, vp::Material>(
@@ -512,7 +636,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       "range.")
       .def(py::init([](double mu_d, double nu, double f, double tau) {
              viscoroll::StandardLinearSolid<double>(mu_d, nu, f, tau);  // validates
-             return StandardLinearSolidMaterial{{{false, mu_d, nu, f, tau}}};
+             return StandardLinearSolidMaterial{{{false, mu_d, nu, f, tau, nullptr}}};
            }),
            py::arg("mu_d"), py::arg("nu"), py::arg("f"), py::arg("tau"))
       .def_property_readonly(
@@ -529,11 +653,81 @@ PYBIND11_MODULE(_viscoroll, m) {
       "line). Raises ValueError naming a parameter out of range.")
       .def(py::init([](double mu, double nu) {
              viscoroll::Elastic<double>(mu, nu);  // validates
-             return ElasticMaterial{{{true, mu, nu, 0.0, 0.0}}};
+             return ElasticMaterial{{{true, mu, nu, 0.0, 0.0, nullptr}}};
            }),
            py::arg("mu"), py::arg("nu"))
       .def_property_readonly(
           "mu", [](const vp::Material& s) { return s.spec.mu_d; }, "Shear modulus.");
+
+  py::class_<vp::Shift>(m, "Shift", "Base class of the time-temperature shifts (WLF, Arrhenius).")
+      .def(
+          "factor",
+          [](const vp::Shift& s, double temperature) {
+            return viscoroll::shift_factor(s.law, temperature);
+          },
+          py::arg("temperature"),
+          "factor(temperature) -> float\n\nThe shift factor a_T (1 at t_ref): every time of the "
+          "spectrum\nis multiplied by it at that temperature (degrees Celsius).")
+      .def_property_readonly(
+          "t_ref", [](const vp::Shift& s) { return viscoroll::reference_temperature(s.law); },
+          "Reference temperature (degrees Celsius).")
+      .def("__repr__", [](const vp::Shift& s) { return shift_repr(s.law); });
+  py::class_<WlfShiftObject, vp::Shift>(
+      m, "WLF",
+      "WLF(c1, c2, t_ref)\n\nThe Williams-Landel-Ferry shift: log10 a_T = -c1 (T - t_ref)/(c2 + "
+      "T - t_ref),\nc1 > 0, c2 > 0 (K), t_ref in degrees Celsius; valid for T > t_ref - c2.")
+      .def(py::init([](double c1, double c2, double t_ref) {
+             return WlfShiftObject{{viscoroll::WlfShift<double>(c1, c2, t_ref)}};
+           }),
+           py::arg("c1"), py::arg("c2"), py::arg("t_ref"));
+  py::class_<ArrheniusShiftObject, vp::Shift>(
+      m, "Arrhenius",
+      "Arrhenius(activation_energy, t_ref)\n\nThe Arrhenius shift: ln a_T = (E_a/R)(1/T - "
+      "1/T_ref) in kelvin,\nactivation_energy > 0 (J/mol), t_ref in degrees Celsius.")
+      .def(py::init([](double activation_energy, double t_ref) {
+             return ArrheniusShiftObject{
+                 {viscoroll::ArrheniusShift<double>(activation_energy, t_ref)}};
+           }),
+           py::arg("activation_energy"), py::arg("t_ref"));
+
+  py::class_<PronyMaterial, vp::Material>(
+      m, "Prony",
+      "Prony(g_inf, nu, terms, shift=None)\n\n"
+      "A generalised Maxwell solid in relaxation form, G(t) = g_inf + sum g exp(-t/tau)\n"
+      "(docs/materials.md): long-term shear modulus g_inf > 0, Poisson's ratio -1 < nu <= 0.5,\n"
+      "terms a sequence of (g, tau) pairs (g >= 0, tau > 0), and optionally a shift (WLF or\n"
+      "Arrhenius) for Scene(temperature=...). Every method solves it: plane and bem exactly,\n"
+      "line by the line theory for a spectrum (slower; default grid 4). Raises ValueError\n"
+      "naming a parameter out of range.")
+      .def(py::init([](double g_inf, double nu, const std::vector<std::pair<double, double>>& terms,
+                       const std::optional<vp::Shift>& shift) {
+             std::vector<viscoroll::RelaxationTerm<double>> t;
+             for (const auto& [g, tau] : terms) t.push_back({g, tau});
+             return PronyMaterial{{prony_spec(viscoroll::PronyRelaxation<double>(g_inf, nu, t),
+                                              shift ? std::optional(shift->law) : std::nullopt)}};
+           }),
+           py::arg("g_inf"), py::arg("nu"), py::arg("terms"), py::arg("shift") = py::none())
+      .def_property_readonly(
+          "g_inf", [](const vp::Material& s) { return s.spec.prony->reference.g_inf(); },
+          "Long-term shear modulus.")
+      .def_property_readonly(
+          "terms",
+          [](const vp::Material& s) {
+            std::vector<std::pair<double, double>> out;
+            for (const auto& t : s.spec.prony->reference.terms()) out.emplace_back(t.g, t.rho);
+            return out;
+          },
+          "The relaxation terms (g, tau) as given.")
+      .def_property_readonly(
+          "glassy_modulus", [](const vp::Material& s) { return s.spec.mu_d; },
+          "g_inf + sum g, the instantaneous shear modulus.")
+      .def_property_readonly(
+          "shift",
+          [](const vp::Material& s) -> py::object {
+            if (!s.spec.prony->shift) return py::none();
+            return shift_object(*s.spec.prony->shift);
+          },
+          "The shift law, or None.");
 
   // Rollers.
   py::class_<vp::Roller>(m, "Roller", "Base class of the roller profiles (Ellipsoid, Cylinder).")
@@ -569,13 +763,15 @@ PYBIND11_MODULE(_viscoroll, m) {
   // Scene.
   py::class_<SceneSpec>(
       m, "Scene",
-      "Scene(material, roller, load, speeds=None)\n\n"
-      "One problem: a material (StandardLinearSolid or Elastic), a roller (Ellipsoid or\n"
+      "Scene(material, roller, load, speeds=None, temperature=None)\n\n"
+      "One problem: a material (StandardLinearSolid, Elastic or Prony), a roller (Ellipsoid or\n"
       "Cylinder), the load (> 0; total for line and bem, per unit length for plane) and\n"
       "optionally the speeds (each >= 0) for sweep() and solve(). Any consistent units.\n"
+      "temperature (degrees Celsius): a Prony material with a shift law is solved there (every\n"
+      "time of its spectrum times a_T); default the law's t_ref.\n"
       "Scene.from_json(path) reads a scene file of the command line (docs/cli.md).")
       .def(py::init([](const vp::Material& material, const vp::Roller& roller, double load,
-                       const std::optional<py::object>& speeds) {
+                       const std::optional<py::object>& speeds, std::optional<double> temperature) {
              SceneSpec s;
              s.material = material.spec;
              s.roller = roller.spec;
@@ -583,29 +779,49 @@ PYBIND11_MODULE(_viscoroll, m) {
              s.load = load;
              if (speeds && !speeds->is_none()) s.speeds = as_vector(*speeds, "speeds");
              check_speeds(s.speeds);
+             set_temperature(s, temperature);
              return s;
            }),
-           py::arg("material"), py::arg("roller"), py::arg("load"), py::arg("speeds") = py::none())
+           py::arg("material"), py::arg("roller"), py::arg("load"), py::arg("speeds") = py::none(),
+           py::arg("temperature") = py::none())
       .def_static(
           "from_json",
-          [](const py::object& path) {
+          [](const py::object& path, std::optional<double> temperature) {
             const std::string file = py::str(path);
             try {
               const auto scene =
                   viscoroll::cli::parse_scene(viscoroll::cli::read_scene_file(file), file);
               SceneSpec s = from_cli(scene, file);
+              if (!temperature && scene.temperatures.size() > 1)
+                throw std::invalid_argument(
+                    file + ": temperature: the file gives " +
+                    std::to_string(scene.temperatures.size()) +
+                    " temperatures and a Scene holds one: read it once per temperature with "
+                    "Scene.from_json(path, temperature=T)");
+              if (!temperature && scene.temperatures.size() == 1)
+                temperature = scene.temperatures.front();
+              set_temperature(s, temperature);
               if (s.method) check_for_method(s, *s.method, std::nullopt);
               return s;
             } catch (const std::invalid_argument& e) {
               throw std::invalid_argument(reader_message(e.what()));
             }
           },
-          py::arg("path"),
-          "Scene.from_json(path) -> Scene\n\n"
+          py::arg("path"), py::arg("temperature") = py::none(),
+          "Scene.from_json(path, temperature=None) -> Scene\n\n"
           "Read a scene file (JSON, SI units; docs/cli.md) with the command line's reader.\n"
-          "Its method and grid become the defaults of solve() and sweep(). Raises ValueError\n"
-          "naming the file and the key with its path, e.g. 'paper.json: material.f = -1 is\n"
-          "outside the valid range f >= 0 (finite)'.")
+          "Its method and grid become the defaults of solve() and sweep(). A prony material\n"
+          "(its terms, or the fit of its DMA file: a poor fit is a warning) is solved at\n"
+          "`temperature` (degrees Celsius), else at the file's one temperature, else at its shift\n"
+          "law's t_ref. Raises ValueError naming the file and the key with its path, e.g.\n"
+          "'paper.json: material.f = -1 is outside the valid range f >= 0 (finite)'.")
+      .def_property_readonly(
+          "temperature",
+          [](const SceneSpec& s) -> py::object {
+            if (!s.material.prony || std::isnan(s.temperature)) return py::none();
+            return py::float_(s.temperature);
+          },
+          "The temperature of a Prony material with a shift law (degrees Celsius), else None.")
       .def_property_readonly(
           "material", [](const SceneSpec& s) { return material_object(s.material); },
           "The material.")
@@ -639,6 +855,8 @@ PYBIND11_MODULE(_viscoroll, m) {
         out += "]";
         if (s.method) out += std::string(", method='") + method_name(*s.method) + "'";
         if (s.grid) out += ", grid=" + std::to_string(*s.grid);
+        if (s.material.prony && !std::isnan(s.temperature))
+          out += ", temperature=" + shortest(s.temperature);
         return out + ")";
       });
 

@@ -1,7 +1,8 @@
-// viscoroll's Python module: the boundary-element solver (BemSolverD) behind solve_bem and
-// sweep_bem. The fields are those of viscoroll-solve --method bem (examples/viscoroll_solve.cpp).
+// viscoroll's Python module: the boundary-element solver behind solve_bem and sweep_bem, over the
+// standard linear solid (BemSolverD) or a Prony series (BemSolver over PronyRelaxation). The fields are those of viscoroll-solve --method bem (examples/viscoroll_solve.cpp).
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <viscoroll/bem/bem_solver.hpp>
 
@@ -11,11 +12,13 @@ namespace viscoroll::python {
 namespace {
 
 using Solver = BemSolverD;
+using SpectrumSolver = BemSolver<double, PronyRelaxation<double>>;
 using Solution = BemSolution<double>;
+static_assert(std::is_same_v<SpectrumSolver::Solution, Solution>);
 
 class BemSolved final : public Solved {
  public:
-  BemSolved(Solution s, double tau, double speed, int grid, double seconds)
+  BemSolved(Solution s, const MaterialKeys& keys, double speed, int grid, double seconds)
       : Solved(Method::bem), s_(std::move(s)) {
     std::size_t peak = 0;
     for (std::size_t q = 0; q < s_.pressure.size(); ++q)
@@ -23,11 +26,7 @@ class BemSolved final : public Solved {
     const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s_.grid.nx));
     const double pmax = s_.pressure.empty() ? 0.0 : s_.pressure[peak];
     const auto along = s_.along_roller();
-    record_ = {{"method", std::string("bem")},
-               {"tau", tau},
-               {"speed", speed},
-               {"vtau", speed * tau},
-               {"a0", s_.a0},
+    record_ = joined(keys.head("bem", speed), {{"a0", s_.a0},
                {"b0", s_.b0},
                {"l", s_.l},
                {"y_minus", -s_.l},
@@ -49,7 +48,7 @@ class BemSolved final : public Solved {
                {"grid", static_cast<long long>(grid)},
                {"cells", static_cast<long long>(s_.grid.size())},
                {"reason", s_.reason},
-               {"warnings", s_.warnings}};
+               {"warnings", s_.warnings}});
   }
 
   const Solution& solution() const { return s_; }
@@ -76,11 +75,19 @@ class BemSolved final : public Solved {
   Solution s_;
 };
 
-Solver make_solver(const SceneSpec& scene, int grid) {
+BemOptions options_for(int grid) {
   BemOptions options;
   options.grid = grid;
+  return options;
+}
+
+Solver make_solver(const SceneSpec& scene, int grid) {
   const auto& m = scene.material;
-  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options);
+  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options_for(grid));
+}
+
+SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int grid) {
+  return SpectrumSolver(prony_at(scene), options_for(grid));
 }
 
 BemScene<double> bem_scene(const SceneSpec& scene, double speed) {
@@ -107,15 +114,23 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 }
 
 SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start) {
+  const auto keys = MaterialKeys::of(scene);
+  if (scene.material.prony)
+    return solve_seeded<BemSolved>(make_spectrum_solver(scene, grid), bem_scene(scene, speed),
+                                   Method::bem, start, keys, grid);
   return solve_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, speed), Method::bem,
-                                 start, scene.material.tau, grid);
+                                 start, keys, grid);
 }
 
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
                                  const SweepOptions& options) {
   for (const double v : speeds) bem_scene(scene, v);  // every speed checked before any work
-  return sweep_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, 0.0), speeds,
-                                 scene.material.tau, grid, options);
+  const auto keys = MaterialKeys::of(scene);
+  if (scene.material.prony)
+    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid), bem_scene(scene, 0.0),
+                                   speeds, keys, grid, options);
+  return sweep_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, 0.0), speeds, keys,
+                                 grid, options);
 }
 
 }  // namespace viscoroll::python

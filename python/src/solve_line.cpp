@@ -1,5 +1,7 @@
-// viscoroll's Python module: the line-contact solver (LineSolverD) behind solve_line and
-// sweep_line. The fields are those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
+// viscoroll's Python module: the line-contact solver behind solve_line and sweep_line, over the
+// standard linear solid (LineSolverD) or a Prony series (LineSolver over PronyRelaxation, the
+// line theory for a spectrum). The fields are those of viscoroll-solve --method line
+// (examples/viscoroll_solve.cpp).
 #include <stdexcept>
 #include <utility>
 #include <viscoroll/line/line_solver.hpp>
@@ -10,37 +12,44 @@ namespace viscoroll::python {
 namespace {
 
 using Solver = LineSolverD;
-using Solution = Solver::Solution;
+using SpectrumSolver = LineSolver<double, PronyRelaxation<double>>;
+
+/// The fields after the head, common to both materials up to chi.
+template <class Solution>
+Record shape_fields(const Solution& s) {
+  return {{"a0", s.a(0.0)},
+          {"b0", s.b(0.0)},
+          {"l", s.l()},
+          {"y_minus", -s.l()},
+          {"y_plus", s.l()},
+          {"d", s.d},
+          {"a_long_term", s.a_long_term},
+          {"l0", s.l_long_term},
+          {"d0", s.d_long_term},
+          {"chi", s.chi}};
+}
+
+template <class Solution>
+Record iteration_fields(const Solution& s, int terms, double seconds) {
+  return {{"seconds", seconds},
+          {"converged", s.converged},
+          {"root", s.root},
+          {"iterations", static_cast<long long>(s.iterations)},
+          {"residual", s.residual},
+          {"terms", static_cast<long long>(terms)},
+          {"reason", s.reason},
+          {"warnings", s.warnings}};
+}
 
 class LineSolved final : public Solved {
  public:
-  LineSolved(Solution s, double tau, double speed, int terms, double seconds)
+  using Solution = Solver::Solution;
+  LineSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
     const auto peak = s_.strip(0.0).peak();
-    record_ = {{"method", std::string("line")},
-               {"tau", tau},
-               {"speed", speed},
-               {"vtau", speed * tau},
-               {"a0", s_.a(0.0)},
-               {"b0", s_.b(0.0)},
-               {"l", s_.l()},
-               {"y_minus", -s_.l()},
-               {"y_plus", s_.l()},
-               {"d", s_.d},
-               {"a_long_term", s_.a_long_term},
-               {"l0", s_.l_long_term},
-               {"d0", s_.d_long_term},
-               {"chi", s_.chi},
-               {"pmax", peak.pressure},
-               {"pmax_x", peak.x},
-               {"seconds", seconds},
-               {"converged", s_.converged},
-               {"root", s_.root},
-               {"iterations", static_cast<long long>(s_.iterations)},
-               {"residual", s_.residual},
-               {"terms", static_cast<long long>(terms)},
-               {"reason", s_.reason},
-               {"warnings", s_.warnings}};
+    record_ = joined(joined(keys.head("line", speed), shape_fields(s_)),
+                     joined({{"pmax", peak.pressure}, {"pmax_x", peak.x}},
+                            iteration_fields(s_, terms, seconds)));
   }
 
   const Solution& solution() const { return s_; }
@@ -53,11 +62,47 @@ class LineSolved final : public Solved {
   Solution s_;
 };
 
-Solver make_solver(const SceneSpec& scene, int terms) {
+/// A Prony material's line solution: the contact's shape and moments, no pressure field
+/// (docs/line-solver.md, "Materials with a spectrum"); active_terms in place of pmax.
+class LineSpectrumSolved final : public Solved {
+ public:
+  using Solution = SpectrumSolver::Solution;
+  LineSpectrumSolved(Solution s, const MaterialKeys& keys, double speed, int terms,
+                     double seconds)
+      : Solved(Method::line), s_(std::move(s)) {
+    record_ = joined(joined(keys.head("line", speed), shape_fields(s_)),
+                     joined({{"active_terms", static_cast<long long>(s_.active_terms)}},
+                            iteration_fields(s_, terms, seconds)));
+  }
+
+  const Solution& solution() const { return s_; }
+  double pressure(double, double) const override {
+    throw std::invalid_argument(
+        "viscoroll: pressure(x, y) is not available for the line method with a Prony material "
+        "(its solution is the contact's shape and moments: a(y), b(y), f0(y); the bem method "
+        "gives the pressure)");
+  }
+  double a(double y) const override { return s_.a(y); }
+  double b(double y) const override { return s_.b(y); }
+  double f0(double y) const override { return s_.f0(y); }
+
+ private:
+  Solution s_;
+};
+
+LineOptions options_for(int terms) {
   LineOptions options;
   options.terms = terms;
+  return options;
+}
+
+Solver make_solver(const SceneSpec& scene, int terms) {
   const auto& m = scene.material;
-  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options);
+  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options_for(terms));
+}
+
+SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int terms) {
+  return SpectrumSolver(prony_at(scene), options_for(terms));
 }
 
 LineScene<double> line_scene(const SceneSpec& scene, double speed) {
@@ -70,15 +115,24 @@ LineScene<double> line_scene(const SceneSpec& scene, double speed) {
 }  // namespace
 
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start) {
+  const auto keys = MaterialKeys::of(scene);
+  if (scene.material.prony)
+    return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms),
+                                            line_scene(scene, speed), Method::line, start, keys,
+                                            terms);
   return solve_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, speed), Method::line,
-                                  start, scene.material.tau, terms);
+                                  start, keys, terms);
 }
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   const SweepOptions& options) {
   for (const double v : speeds) line_scene(scene, v);  // every speed checked before any work
-  return sweep_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, 0.0), speeds,
-                                  scene.material.tau, terms, options);
+  const auto keys = MaterialKeys::of(scene);
+  if (scene.material.prony)
+    return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms),
+                                            line_scene(scene, 0.0), speeds, keys, terms, options);
+  return sweep_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, 0.0), speeds, keys,
+                                  terms, options);
 }
 
 }  // namespace viscoroll::python

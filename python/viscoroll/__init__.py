@@ -6,12 +6,14 @@ implements Panek & Kalker (1980): the 3-D line-contact theory of an ellipsoidal 
 boundary-element reference ("bem").
 
 Materials
-    StandardLinearSolid(mu_d=, nu=, f=, tau=), Elastic(mu=, nu=)
+    StandardLinearSolid(mu_d=, nu=, f=, tau=), Elastic(mu=, nu=),
+    Prony(g_inf=, nu=, terms=[(g, tau), ...], shift=None) with WLF(c1=, c2=, t_ref=) or
+    Arrhenius(activation_energy=, t_ref=)
 Rollers
     Ellipsoid(c1=, c2=), Cylinder(radius=) (plane only)
 Scenes
-    Scene(material=, roller=, load=, speeds=None), Scene.from_json(path) (a scene file of the
-    command line viscoroll-solve, docs/cli.md)
+    Scene(material=, roller=, load=, speeds=None, temperature=None), Scene.from_json(path,
+    temperature=None) (a scene file of the command line viscoroll-solve, docs/cli.md)
 Solving
     solve(scene, method=None, grid=None, speed=None, start=None) -> Result
     sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16,
@@ -42,13 +44,17 @@ Documentation: docs/python.md of the repository.
 
 from . import _viscoroll
 from ._viscoroll import (
+    WLF,
+    Arrhenius,
     Cylinder,
     Elastic,
     Ellipsoid,
     Material,
+    Prony,
     Result,
     Roller,
     Scene,
+    Shift,
     StandardLinearSolid,
     __version__,
 )
@@ -73,14 +79,18 @@ solve.__doc__ = _doc(_viscoroll.solve)
 sweep.__doc__ = _doc(_viscoroll.sweep)
 
 __all__ = [
+    "Arrhenius",
     "Cylinder",
     "Elastic",
     "Ellipsoid",
     "Material",
+    "Prony",
     "Result",
     "Roller",
     "Scene",
+    "Shift",
     "StandardLinearSolid",
+    "WLF",
     "__version__",
     "solve",
     "sweep",

@@ -113,10 +113,9 @@ def test_from_json_file_errors(tmp_path):
 
 
 @pytest.mark.parametrize("method", [None, "plane", "line", "bem"])
-def test_from_json_of_a_prony_scene_raises_and_points_to_the_command_line(tmp_path, method):
-    """A prony material (several relaxation times) is the command line's (every method); the
-    bindings raise ValueError naming the key and pointing to viscoroll-solve, whatever the
-    method."""
+def test_from_json_of_a_prony_scene_with_several_temperatures_asks_for_one(tmp_path, method):
+    """A Scene holds one temperature: a file with several raises ValueError naming the file and
+    temperature, whatever the method; temperature= picks one."""
     document = json.loads(json.dumps(GOOD))
     document["material"] = {"model": "prony", "nu": 0.5, "g_inf": 1.0e6,
                             "terms": [{"g": 2.0e6, "tau": 1e-3}, {"g": 5.0e5, "tau": 1e-1}],
@@ -130,14 +129,31 @@ def test_from_json_of_a_prony_scene_raises_and_points_to_the_command_line(tmp_pa
     with pytest.raises(ValueError) as error:
         vr.Scene.from_json(path)
     message = str(error.value)
-    assert message.startswith(str(path) + ": ")
-    assert ("material.model 'prony': the Python bindings take one relaxation time so far; "
-            "solve it with viscoroll-solve (every --method takes it)") in message
+    assert message.startswith(str(path) + ": temperature: the file gives 2 temperatures")
+    assert "Scene.from_json(path, temperature=T)" in message
+    assert vr.Scene.from_json(path, temperature=0).temperature == 0
 
 
-def test_from_json_of_the_shipped_prony_scene_raises(scenes_dir):
-    with pytest.raises(ValueError, match="material.model 'prony'"):
-        vr.Scene.from_json(scenes_dir / "rubber_prony_bem.json")
+def test_temperature_errors_name_the_parameter():
+    prony = vr.Prony(g_inf=1e6, nu=0.5, terms=[(2e6, 1e-3)], shift=vr.WLF(8.86, 101.6, 25))
+    roller = vr.Ellipsoid(c1=20.0, c2=0.5)
+    with pytest.raises(ValueError, match=r"temperature = -80 is outside the valid range "
+                                         r"temperature > t_ref - c2 = -76.6"):
+        vr.Scene(prony, roller, 100.0, temperature=-80)
+    with pytest.raises(ValueError, match="temperature is valid only with a Prony material with "
+                                         "a shift law"):
+        vr.Scene(vr.Elastic(mu=1e6, nu=0.5), roller, 100.0, temperature=20)
+    with pytest.raises(ValueError, match="temperature is valid only with a Prony material with "
+                                         "a shift law"):
+        vr.Scene(vr.Prony(g_inf=1e6, nu=0.5, terms=[(2e6, 1e-3)]), roller, 100.0, temperature=20)
+    with pytest.raises(ValueError, match=r"g_inf = -1 is outside the valid range"):
+        vr.Prony(g_inf=-1, nu=0.5, terms=[(2e6, 1e-3)])
+    with pytest.raises(ValueError, match=r"rho\[1\] = 0 is outside the valid range"):
+        vr.Prony(g_inf=1e6, nu=0.5, terms=[(2e6, 1e-3), (1e6, 0.0)])
+    with pytest.raises(ValueError, match=r"c2 = 0 is outside the valid range"):
+        vr.WLF(8.86, 0.0, 25)
+    with pytest.raises(ValueError, match=r"activation_energy = -1 is outside the valid range"):
+        vr.Arrhenius(-1.0, 25)
 
 
 def test_non_convergence_is_on_the_result():
