@@ -50,6 +50,7 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/line_record.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
 
@@ -793,30 +794,15 @@ int run_line(const Problem& p, Output& out) {
         [&](double temperature, const auto& scene, const auto& s, double seconds) {
           const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
           // The spectrum's line solution carries the contact's shape and moments, not the
-          // pressure at y = 0 (docs/line-solver.md): no pmax.
-          out.add({{"method", std::string("line")},
-                   {"temperature", temperature},
-                   {"a_T", a_t},
-                   {"speed", scene.speed},
-                   {"a0", s.a(0.0)},
-                   {"b0", s.b(0.0)},
-                   {"l", s.l()},
-                   {"y_minus", -s.l()},
-                   {"y_plus", s.l()},
-                   {"d", s.d},
-                   {"a_long_term", s.a_long_term},
-                   {"l0", s.l_long_term},
-                   {"d0", s.d_long_term},
-                   {"chi", s.chi},
-                   {"active_terms", static_cast<long long>(s.active_terms)},
-                   {"seconds", seconds},
-                   {"converged", s.converged},
-                   {"root", s.root},
-                   {"iterations", static_cast<long long>(s.iterations)},
-                   {"residual", s.residual},
-                   {"terms", static_cast<long long>(options.terms)},
-                   {"reason", s.reason},
-                   {"warnings", s.warnings}});
+          // pressure at y = 0 (docs/line-solver.md): active_terms in place of pmax.
+          Record r = {{"method", std::string("line")},
+                      {"temperature", temperature},
+                      {"a_T", a_t},
+                      {"speed", scene.speed}};
+          const Record middle = {{"active_terms", static_cast<long long>(s.active_terms)}};
+          const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
+          r.insert(r.end(), fields.begin(), fields.end());
+          out.add(std::move(r));
           note_outcome(out, "line", temperature_label(p, temperature, scene.speed), s);
         });
   return run_sweeps(
@@ -824,30 +810,14 @@ int run_line(const Problem& p, Output& out) {
       [&](double tau) { return viscoroll::LineSolverD(material(p, tau), options); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
         const auto peak = s.strip(0.0).peak();
-        out.add({{"method", std::string("line")},
-                 {"tau", tau},
-                 {"speed", scene.speed},
-                 {"vtau", scene.speed * tau},
-                 {"a0", s.a(0.0)},
-                 {"b0", s.b(0.0)},
-                 {"l", s.l()},
-                 {"y_minus", -s.l()},
-                 {"y_plus", s.l()},
-                 {"d", s.d},
-                 {"a_long_term", s.a_long_term},
-                 {"l0", s.l_long_term},
-                 {"d0", s.d_long_term},
-                 {"chi", s.chi},
-                 {"pmax", peak.pressure},
-                 {"pmax_x", peak.x},
-                 {"seconds", seconds},
-                 {"converged", s.converged},
-                 {"root", s.root},
-                 {"iterations", static_cast<long long>(s.iterations)},
-                 {"residual", s.residual},
-                 {"terms", static_cast<long long>(options.terms)},
-                 {"reason", s.reason},
-                 {"warnings", s.warnings}});
+        Record r = {{"method", std::string("line")},
+                    {"tau", tau},
+                    {"speed", scene.speed},
+                    {"vtau", scene.speed * tau}};
+        const Record middle = {{"pmax", peak.pressure}, {"pmax_x", peak.x}};
+        const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
+        r.insert(r.end(), fields.begin(), fields.end());
+        out.add(std::move(r));
         note_outcome(out, "line", label(p, tau, scene.speed), s);
       });
 }

@@ -7,6 +7,7 @@
 #include <viscoroll/line/line_solver.hpp>
 
 #include "bindings.hpp"
+#include "cli/line_record.hpp"
 
 namespace viscoroll::python {
 namespace {
@@ -14,42 +15,15 @@ namespace {
 using Solver = LineSolverD;
 using SpectrumSolver = LineSolver<double, PronyRelaxation<double>>;
 
-/// The fields after the head, common to both materials up to chi.
-template <class Solution>
-Record shape_fields(const Solution& s) {
-  return {{"a0", s.a(0.0)},
-          {"b0", s.b(0.0)},
-          {"l", s.l()},
-          {"y_minus", -s.l()},
-          {"y_plus", s.l()},
-          {"d", s.d},
-          {"a_long_term", s.a_long_term},
-          {"l0", s.l_long_term},
-          {"d0", s.d_long_term},
-          {"chi", s.chi}};
-}
-
-template <class Solution>
-Record iteration_fields(const Solution& s, int terms, double seconds) {
-  return {{"seconds", seconds},
-          {"converged", s.converged},
-          {"root", s.root},
-          {"iterations", static_cast<long long>(s.iterations)},
-          {"residual", s.residual},
-          {"terms", static_cast<long long>(terms)},
-          {"reason", s.reason},
-          {"warnings", s.warnings}};
-}
-
 class LineSolved final : public Solved {
  public:
   using Solution = Solver::Solution;
   LineSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
     const auto peak = s_.strip(0.0).peak();
-    record_ = joined(joined(keys.head("line", speed), shape_fields(s_)),
-                     joined({{"pmax", peak.pressure}, {"pmax_x", peak.x}},
-                            iteration_fields(s_, terms, seconds)));
+    record_ = joined(keys.head("line", speed),
+                     cli::line_fields<Record>(s_, {{"pmax", peak.pressure}, {"pmax_x", peak.x}},
+                                              terms, seconds));
   }
 
   const Solution& solution() const { return s_; }
@@ -70,9 +44,10 @@ class LineSpectrumSolved final : public Solved {
   LineSpectrumSolved(Solution s, const MaterialKeys& keys, double speed, int terms,
                      double seconds)
       : Solved(Method::line), s_(std::move(s)) {
-    record_ = joined(joined(keys.head("line", speed), shape_fields(s_)),
-                     joined({{"active_terms", static_cast<long long>(s_.active_terms)}},
-                            iteration_fields(s_, terms, seconds)));
+    record_ = joined(
+        keys.head("line", speed),
+        cli::line_fields<Record>(s_, {{"active_terms", static_cast<long long>(s_.active_terms)}},
+                                 terms, seconds));
   }
 
   const Solution& solution() const { return s_; }

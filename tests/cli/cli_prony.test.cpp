@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/material/temperature_shift.hpp>
@@ -61,6 +62,38 @@ void check_same(json a, json b, double tolerance, const std::vector<std::string>
       CHECK(value == b[key]);
     }
   }
+}
+
+/// The scene's lines with the one relaxation term (mu_d/(1 + f), mu_d f/(1 + f), tau/(1 + f))
+/// and with the standard linear solid of its creep form (f_1, tau_1 after the conversion),
+/// `speeds` each.
+using Lines = decltype(json_lines(std::string()));
+
+std::pair<Lines, Lines> one_term_and_its_solid(const fs::path& dir, json scene, std::size_t speeds) {
+  const double mu_d = 3e6, f = 9, tau = 0.01;
+  const viscoroll::PronyRelaxation<double> relaxation(mu_d / (1 + f), 0.5,
+                                                      {{mu_d * f / (1 + f), tau / (1 + f)}});
+  const auto creep = relaxation.memory_terms();
+  scene["material"] = {
+      {"model", "prony"},
+      {"nu", 0.5},
+      {"g_inf", mu_d / (1 + f)},
+      {"terms", json::array({{{"g", mu_d * f / (1 + f)}, {"tau", tau / (1 + f)}}})}};
+  const Run a = run({"--scene", write(dir, "one.json", scene.dump()).string()});
+  INFO("prony: " << a.out << a.err);
+  CHECK(a.status == 0);
+  scene["material"] = {{"model", "standard_linear_solid"},
+                       {"mu_d", relaxation.glassy_modulus()},
+                       {"nu", 0.5},
+                       {"f", creep[0].f},
+                       {"tau", creep[0].tau}};
+  const Run b = run({"--scene", write(dir, "sls.json", scene.dump()).string()});
+  INFO("sls: " << b.out << b.err);
+  CHECK(b.status == 0);
+  auto x = json_lines(a.out), y = json_lines(b.out);
+  REQUIRE(x.size() == speeds);
+  REQUIRE(y.size() == speeds);
+  return {std::move(x), std::move(y)};
 }
 
 }  // namespace
@@ -237,31 +270,9 @@ TEST_CASE("cli prony: the plane method solves a spectrum; one term equals the st
   // One relaxation term against the standard linear solid of its creep form (f_1, tau_1): the
   // plane solver's spectrum path and its single-time closed form, (S1)-(S10) against (P1)-(P7),
   // agree to rounding (theory.md section 12; 1e-13 covers the JSON's 17 digits and the paths).
-  const double mu_d = 3e6, f = 9, tau = 0.01;
-  const viscoroll::PronyRelaxation<double> relaxation(mu_d / (1 + f), 0.5,
-                                                      {{mu_d * f / (1 + f), tau / (1 + f)}});
-  const auto creep = relaxation.memory_terms();
-  scene["material"] = {
-      {"model", "prony"},
-      {"nu", 0.5},
-      {"g_inf", mu_d / (1 + f)},
-      {"terms", json::array({{{"g", mu_d * f / (1 + f)}, {"tau", tau / (1 + f)}}})}};
   scene.erase("temperature");
   scene["speeds"] = {0.001, 0.1, 10.0};
-  const Run a = run({"--scene", write(dir.path(), "one.json", scene.dump()).string()});
-  INFO("prony: " << a.out << a.err);
-  CHECK(a.status == 0);
-  scene["material"] = {{"model", "standard_linear_solid"},
-                       {"mu_d", relaxation.glassy_modulus()},
-                       {"nu", 0.5},
-                       {"f", creep[0].f},
-                       {"tau", creep[0].tau}};
-  const Run b = run({"--scene", write(dir.path(), "sls.json", scene.dump()).string()});
-  INFO("sls: " << b.out << b.err);
-  CHECK(b.status == 0);
-  const auto x = json_lines(a.out), y = json_lines(b.out);
-  REQUIRE(x.size() == 3);
-  REQUIRE(y.size() == 3);
+  const auto [x, y] = one_term_and_its_solid(dir.path(), scene, 3);
   for (std::size_t k = 0; k < x.size(); ++k) {
     check_same(x[k], y[k], 1e-13,
                {"seconds", "temperature", "a_T", "tau", "vtau", "residual", "iterations",
@@ -303,32 +314,10 @@ TEST_CASE("cli prony: the line method solves a spectrum; one term equals the sta
   // One relaxation term against the standard linear solid of its creep form: the spectrum path
   // of LineSolver hands one active term to the paper's theory (theory.md section 14), so the two
   // records agree to the JSON's 17 digits (1e-13 relative) where both have the field.
-  const double mu_d = 3e6, f = 9, tau = 0.01;
-  const viscoroll::PronyRelaxation<double> relaxation(mu_d / (1 + f), 0.5,
-                                                      {{mu_d * f / (1 + f), tau / (1 + f)}});
-  const auto creep = relaxation.memory_terms();
-  scene["material"] = {
-      {"model", "prony"},
-      {"nu", 0.5},
-      {"g_inf", mu_d / (1 + f)},
-      {"terms", json::array({{{"g", mu_d * f / (1 + f)}, {"tau", tau / (1 + f)}}})}};
   scene.erase("temperature");
   scene["speeds"] = {0.01, 1.0};
   scene["grid"] = 6;  // the standard linear solid's default, given to both
-  const Run a = run({"--scene", write(dir.path(), "one.json", scene.dump()).string()});
-  INFO("prony: " << a.out << a.err);
-  CHECK(a.status == 0);
-  scene["material"] = {{"model", "standard_linear_solid"},
-                       {"mu_d", relaxation.glassy_modulus()},
-                       {"nu", 0.5},
-                       {"f", creep[0].f},
-                       {"tau", creep[0].tau}};
-  const Run b = run({"--scene", write(dir.path(), "sls.json", scene.dump()).string()});
-  INFO("sls: " << b.out << b.err);
-  CHECK(b.status == 0);
-  const auto x = json_lines(a.out), y = json_lines(b.out);
-  REQUIRE(x.size() == 2);
-  REQUIRE(y.size() == 2);
+  const auto [x, y] = one_term_and_its_solid(dir.path(), scene, 2);
   for (std::size_t k = 0; k < x.size(); ++k) {
     CHECK(x[k]["active_terms"] == 1);
     check_same(x[k], y[k], 1e-13,
