@@ -25,12 +25,20 @@
 // middle, V tau_k / a0 = 1e-3 .. 1e3, on the same grid as the standard linear solid (the paper's
 // load 5/(3 (1 + f) c) makes it independent of f): issue 20's target, the 20-term table within
 // 5 times the one-term table (regime 2), at N = 16 and 32.
+//
+// BM_bem_crowned_roller: one complete solve of examples/scenes/crowned_roller.json (a cylinder
+// of radius 50 mm, 50 mm flat, 50 mm crowns, 80 mm long; the standard linear solid mu_d = 2 MPa,
+// f = 4, tau = 5 ms; 100 N) through bem_scene(profile, ...), at 0.1 and 1 m/s and N = 16, 24, 32
+// on one thread: the grid study of docs/rollers.md converges d, chi and the edge-peak ratio to
+// 0.2% from N = 24 (issue 21). Counters: d, chi, the largest load per unit length f0_max and its
+// ratio to F0(0).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
+#include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/prony.hpp>
@@ -66,6 +74,34 @@ void paper_scene(benchmark::State& state, bool final_solve) {
 }
 
 void BM_bem_paper_scene(benchmark::State& state) { paper_scene(state, true); }
+
+void BM_bem_crowned_roller(benchmark::State& state) {
+  viscoroll::BemOptions o;
+  o.grid = static_cast<int>(state.range(0));
+  o.threads = 1;
+  const viscoroll::StandardLinearSolid<double> rubber(2e6, 0.5, 4.0, 0.005);
+  const viscoroll::BemSolverD solver(rubber, o);
+  const viscoroll::CrownedCylinder<double> roller(0.05, 0.05, 0.05, 0.08);
+  const double speed = state.range(1) == 0 ? 0.1 : 1.0;
+  const auto scene = viscoroll::bem_scene(roller, rubber, 100.0, speed);
+  viscoroll::BemSolution<double> s;
+  for (auto _ : state) {
+    s = solver.solve(scene);
+    benchmark::DoNotOptimize(s.pressure.data());
+    benchmark::ClobberMemory();
+  }
+  const auto along = s.along_roller();
+  double f0_centre = 0;
+  for (std::size_t k = 0; k < along.y.size(); ++k)
+    if (k == 0 || std::abs(along.y[k]) < std::abs(along.y[k - 1])) f0_centre = along.f0[k];
+  state.counters["speed"] = speed;
+  state.counters["d"] = s.d;
+  state.counters["chi"] = s.chi;
+  state.counters["converged"] = s.converged;
+  state.counters["cells"] = static_cast<double>(s.grid.size());
+  state.counters["f0_max"] = along.f0_max;
+  state.counters["edge_peak_ratio"] = along.f0_max / f0_centre;
+}
 /// The same without the final solve of the converged set (final_tolerance = 0): its cost.
 void BM_bem_paper_scene_no_final_solve(benchmark::State& state) { paper_scene(state, false); }
 
@@ -190,6 +226,11 @@ BENCHMARK(BM_bem_paper_scene_no_final_solve)
     ->Args({16, 1})
     ->Args({32, 1})
     ->Args({64, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+// Arguments: N, speed (0: 0.1 m/s, 1: 1 m/s).
+BENCHMARK(BM_bem_crowned_roller)
+    ->ArgsProduct({{16, 24, 32}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 // The million-cell grid (N = 312: 1001 x 1001 cells), on two threads; one iteration per run.
