@@ -2,8 +2,7 @@
 # README command 2: install the dependencies, build the release preset (warnings as errors) and run
 # every test, [slow] ones included. It builds the target viscoroll_check: the tests, the programs
 # they run (examples), the header compile tests and the compiled library, not the benchmarks
-# (`cmake --build --preset release --target viscoroll_benchmarks`; CI compiles them in its
-# sanitize build; docs/building.md).
+# (`cmake --build --preset release --target viscoroll_benchmarks`; docs/building.md).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
