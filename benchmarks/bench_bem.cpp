@@ -91,16 +91,13 @@ void BM_bem_crowned_roller(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   const auto along = s.along_roller();
-  double f0_centre = 0;
-  for (std::size_t k = 0; k < along.y.size(); ++k)
-    if (k == 0 || std::abs(along.y[k]) < std::abs(along.y[k - 1])) f0_centre = along.f0[k];
   state.counters["speed"] = speed;
   state.counters["d"] = s.d;
   state.counters["chi"] = s.chi;
   state.counters["converged"] = s.converged;
   state.counters["cells"] = static_cast<double>(s.grid.size());
   state.counters["f0_max"] = along.f0_max;
-  state.counters["edge_peak_ratio"] = along.f0_max / f0_centre;
+  state.counters["edge_peak_ratio"] = along.f0_max / along.f0_nearest(0.0);
 }
 /// The same without the final solve of the converged set (final_tolerance = 0): its cost.
 void BM_bem_paper_scene_no_final_solve(benchmark::State& state) { paper_scene(state, false); }

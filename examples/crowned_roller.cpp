@@ -70,14 +70,6 @@ viscoroll::PronyRelaxation<double> rubber() {
   return {2.5e6, 0.5, std::move(terms)};
 }
 
-/// F0 at the station nearest y = 0.
-double f0_centre(const viscoroll::AlongRoller<double>& along) {
-  std::size_t centre = 0;
-  for (std::size_t k = 1; k < along.y.size(); ++k)
-    if (std::abs(along.y[k]) < std::abs(along.y[centre])) centre = k;
-  return along.f0.empty() ? 0.0 : along.f0[centre];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -128,7 +120,7 @@ int main(int argc, char** argv) {
         const double speed = std::pow(10.0, 0.5 * e);
         const auto s = solve(crown_radius, speed);
         const auto along = s.along_roller();
-        const double centre = f0_centre(along);
+        const double centre = along.f0_nearest(0.0);
         peaks_csv << crown_radius << ',' << speed << ',' << s.d << ',' << s.chi << ',' << centre
                   << ',' << along.f0_max << ',' << along.f0_max / centre << ',' << along.f0_max_y
                   << '\n';

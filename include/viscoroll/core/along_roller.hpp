@@ -3,6 +3,8 @@
 // roller").
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 
@@ -23,6 +25,16 @@ struct AlongRoller {
   Real y_minus = 0, y_plus = 0;  ///< the contact's ends along y
   Real f0_max = 0;               ///< the largest F0
   Real f0_max_y = 0;             ///< where it is (the first station, if several)
+
+  /// F0 at the station nearest `at` (the first of two equally near); 0 without stations. With
+  /// at = 0: the F0(0) that an edge peak f0_max is compared with.
+  Real f0_nearest(Real at) const {
+    using std::abs;
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < y.size(); ++i)
+      if (abs(y[i] - at) < abs(y[k] - at)) k = i;
+    return f0.empty() ? Real(0) : f0[k];
+  }
 };
 
 }  // namespace viscoroll
