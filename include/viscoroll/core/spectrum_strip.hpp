@@ -54,6 +54,17 @@ struct SpectrumStrip {
   Real amplification{};
 };
 
+/// The derivatives of a SpectrumStrip's b, g0, pig1 and centroid in the right sides right[k] of
+/// its leading-edge conditions (S12) (M values each; exact, as the solve (S5) is linear in them)
+/// and in the half width a at fixed right sides (`*_a`, central differences with step
+/// eps^(1/3) a: relative error about eps^(2/3)). The line solver's Jacobian (docs/theory.md
+/// (S17)).
+template <RealScalar Real>
+struct SpectrumStripSlopes {
+  std::vector<Real> b, g0, pig1, centroid;
+  Real b_a{}, g0_a{}, pig1_a{}, centroid_a{};
+};
+
 namespace detail {
 
 /// (S10) M_i / pi = int (xi - mu_i) phi_i(xi) / sqrt(1 - xi^2) dxi / pi in units of a (a = 1):
@@ -79,10 +90,12 @@ Real spectrum_term_moment(Real even, Real odd, Real g, Real alpha, Real mu) {
   return even * (e1 / alpha) - odd * e1 + g * (e0 / alpha);
 }
 
-/// Solves the n x n system X x = rhs (row-major X) by Gaussian elimination with partial pivoting,
-/// in place; returns x in rhs. Small dense systems only (n = 2M + 1).
+/// Solves X x = rhs for `columns` right sides at once (row-major X, n x n; rhs row-major n x
+/// columns), by Gaussian elimination with partial pivoting, in place: the solutions in rhs.
+/// Small dense systems only (n = 2M + 1).
 template <class Real>
-void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
+void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n,
+                 std::size_t columns) {
   using std::abs;
   for (std::size_t c = 0; c < n; ++c) {
     std::size_t pivot = c;
@@ -90,23 +103,31 @@ void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
       if (abs(X[r * n + c]) > abs(X[pivot * n + c])) pivot = r;
     if (pivot != c) {
       for (std::size_t k = 0; k < n; ++k) std::swap(X[c * n + k], X[pivot * n + k]);
-      std::swap(rhs[c], rhs[pivot]);
+      for (std::size_t j = 0; j < columns; ++j)
+        std::swap(rhs[c * columns + j], rhs[pivot * columns + j]);
     }
     const Real d = X[c * n + c];
     for (std::size_t r = c + 1; r < n; ++r) {
       const Real factor = X[r * n + c] / d;
       if (factor == 0) continue;
       for (std::size_t k = c; k < n; ++k) X[r * n + k] -= factor * X[c * n + k];
-      rhs[r] -= factor * rhs[c];
+      for (std::size_t j = 0; j < columns; ++j) rhs[r * columns + j] -= factor * rhs[c * columns + j];
     }
   }
   for (std::size_t c = n; c-- > 0;) {
-    Real sum = rhs[c];
-    for (std::size_t k = c + 1; k < n; ++k) sum -= X[c * n + k] * rhs[k];
-    rhs[c] = sum / X[c * n + c];
+    for (std::size_t j = 0; j < columns; ++j) {
+      Real sum = rhs[c * columns + j];
+      for (std::size_t k = c + 1; k < n; ++k) sum -= X[c * n + k] * rhs[k * columns + j];
+      rhs[c * columns + j] = sum / X[c * n + c];
+    }
   }
 }
 
+/// The same for one right side.
+template <class Real>
+void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
+  solve_dense(X, rhs, n, std::size_t(1));
+}
 
 /// The memory terms (f_k, tau_k) of a spectrum at one speed, sorted as the solvers for a
 /// spectrum sort them (docs/theory.md section 12, "Terms at their limits", and section 14):
@@ -150,15 +171,19 @@ SpectrumClasses<Real> classify_spectrum(const Terms& terms, Real speed, int leng
 /// (S12) of docs/theory.md, A_k = Psi_k right[k] with A_k = C1 e^z_k [a (b + lambda_k -
 /// Pi_g(1/lambda_k)) K1(z_k) - Pi_h(1/lambda_k) K0(z_k)], z_k = a/lambda_k,
 /// Psi_k = prod_i (1 - mu_i/lambda_k), instead of the plane's A_k = 0; c1 is C1 in the same units
-/// (used only with `right`).
+/// (used only with `right`). With `slopes` (and `right`), also the derivatives of the result in
+/// the right sides and in a (SpectrumStripSlopes).
 template <RealScalar Real>
 SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
-                                   const std::vector<Real>* right = nullptr, Real c1 = Real(1)) {
+                                   const std::vector<Real>* right = nullptr, Real c1 = Real(1),
+                                   SpectrumStripSlopes<Real>* slopes = nullptr) {
   using std::abs;
   const auto& mu = lengths.relaxation;
   const auto& lambda = lengths.retardation;
   const std::size_t m = mu.size(), n = 2 * m + 1;
   std::vector<Real> X(n * n, Real(0)), rhs(n, Real(0));
+  // d rhs[m + k] / d right[k] (S12), for the slopes.
+  std::vector<Real> right_factor(right != nullptr ? m : 0);
   const auto at = [&X, n](std::size_t r, std::size_t c) -> Real& { return X[r * n + c]; };
   // (S9) A_i = prod_{j != i} mu_i / (mu_i - mu_j) = l_i(0), the weights of the partial fractions.
   std::vector<Real> weight(m);
@@ -207,10 +232,13 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
     at(m + k, 2 * m) = -s * inv_psi * row;
     // (S12): the row (without its 1/(1 + s_k)) is -A_k / (C1 a^2 e^z K0(z) Psi_k), and
     // A_k = Psi_k right[k].
-    if (right != nullptr)
+    if (right != nullptr) {
+      right_factor[k] = -1 / (c1 * a * a *
+                              (special::bessel_k0_scaled(1 / lam) + special::bessel_k1_scaled(1 / lam)));
       rhs[m + k] = -(*right)[k] /
                    (c1 * a * a * (special::bessel_k0_scaled(1 / lam) +
                                   special::bessel_k1_scaled(1 / lam)));
+    }
   }
   // Pi_g(0) = sum_i A_i w_i = Lambda_1 (S4), with sum_i A_i = 1 and sum_i omega_i = N(0) = 0:
   // sum_i W_i = 0.
@@ -258,6 +286,41 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
   Real amp = 0;
   for (const Real w : weight) amp += abs(w);
   out.amplification = amp;
+  if (slopes != nullptr && right != nullptr) {
+    // In the right sides: the system's solution for the columns d rhs / d right[k], and the
+    // outputs linearised: b' = a x'_b, G0' = a^2 sum U_i', pig1' = a sum mu_i W_i', odd_i' =
+    // W_i' - A_i x'_b, and the centroid's quotient (S10) differentiated.
+    std::vector<Real> cols(n * m, Real(0));
+    for (std::size_t k = 0; k < m; ++k) cols[(m + k) * m + k] = right_factor[k];
+    std::vector<Real> X1 = X0;
+    detail::solve_dense(X1, cols, n, m);
+    const Real half_g = Real(1) / 2 + g0;
+    for (auto* v : {&slopes->b, &slopes->g0, &slopes->pig1, &slopes->centroid}) v->assign(m, Real(0));
+    for (std::size_t k = 0; k < m; ++k) {
+      const auto z = [&](std::size_t row) { return cols[row * m + k]; };
+      Real dg = 0, dpig = 0, dmoment = 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        dg += z(i);
+        dpig += mu[i] * z(m + i);
+        const Real dodd = z(m + i) - weight[i] * z(2 * m);
+        dmoment += detail::spectrum_term_moment(Real(0), dodd, z(i), a / mu[i], mu[i] / a);
+      }
+      slopes->b[k] = z(2 * m) * a;
+      slopes->g0[k] = dg * a * a;
+      slopes->pig1[k] = dpig * a;
+      slopes->centroid[k] = a * (dmoment * half_g - moment * dg) / (half_g * half_g);
+    }
+    // In a at fixed right sides: central differences (every coefficient of the system depends on
+    // a through the Bessel ratios).
+    using std::cbrt;
+    const Real h = cbrt(std::numeric_limits<Real>::epsilon()) * a;
+    const SpectrumStrip<Real> up = spectrum_strip(a + h, lengths, right, c1);
+    const SpectrumStrip<Real> down = spectrum_strip(a - h, lengths, right, c1);
+    slopes->b_a = (up.b - down.b) / (2 * h);
+    slopes->g0_a = (up.g0 - down.g0) / (2 * h);
+    slopes->pig1_a = (up.pig1 - down.pig1) / (2 * h);
+    slopes->centroid_a = (up.centroid - down.centroid) / (2 * h);
+  }
   return out;
 }
 

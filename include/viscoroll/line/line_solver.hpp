@@ -657,13 +657,14 @@ class LineSolver {
     }
     const numerics::LeastSquaresOptions<Real> settings{.max_iterations = options_.max_iterations,
                                                        .root_tolerance = root_tolerance(),
-                                                       .analytic_jacobian = false};
+                                                       .analytic_jacobian = options_.jacobian ==
+                                                                            LineJacobian::analytic};
     int iterations = 0;
     Vector r;
     numerics::LeastSquaresOutcome out;
     std::optional<LineSpectrumResidual<Real, Quadrature>> last;
     for (const int n : continuation_stages(options_.terms)) {
-      last.emplace(prob, n);
+      last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance));
       Vector x = last->pack(shape, moments, d);
       r.resize(last->equations());
       if (!(*last)(x, r)) {

@@ -23,6 +23,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/detail/spectrum_memory.hpp>
 #include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
@@ -55,7 +56,7 @@ struct LineSpectrumMoments {
 /// Unknowns (4N + 5): alpha_0..alpha_{N-1} (ln a), beta_0..beta_N (b / a_ref), gamma_0..gamma_N,
 /// kappa_0..kappa_N, ln(l / l_ref), d / (C1 a_ref^2). Equations (4N + 5): at each point (34) with
 /// (S13), b, G0/a^2 and the centroid of the strip (S12) minus the expanded ones, then the load.
-/// A least-squares problem for numerics::levenberg_marquardt (forward-difference Jacobian).
+/// A least-squares problem for numerics::levenberg_marquardt, with a semi-analytic Jacobian.
 template <RealScalar Real, class Quadrature>
 requires NodalQuadratureRule<Quadrature, Real>
 class LineSpectrumResidual {
@@ -65,8 +66,9 @@ class LineSpectrumResidual {
 
   /// basis: the expansion variable of every series (LineBasis::s_mapped with scale
   /// mu_1/a_ref resolves the end layers where a(y) falls to the relaxation lengths).
+  /// tolerance: the relative accuracy of every integral (LineNodeRule; 0: the scalar's epsilon).
   LineSpectrumResidual(LineSpectrumProblem<Real> problem, int terms,
-                       LineBasis basis = LineBasis::t_squared)
+                       LineBasis basis = LineBasis::t_squared, Real tolerance = Real(0))
       : p_(std::move(problem)), n_(terms), basis_(basis) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     using std::cos;
@@ -77,9 +79,9 @@ class LineSpectrumResidual {
                     ">= 1, as many relaxation lengths");
     for (const Real m : mu) mu_sum_ += m;
     for (const Real l : lam) lambda_sum_ += l;
-    // One node rule per retardation length: its t-panels on the scale x0/lambda_k, its end panels
-    // on the nearest pole of G0, where I0(a/mu_1) = 0 (f of the rule such that (1 + f)/V =
-    // 1/mu_1).
+    // The node rule of the s-integrals: its end panels on the nearest pole of G0, where
+    // I0(a/mu_1) = 0 (f of the rule such that (1 + f)/V = 1/mu_1); the memory integrals of all
+    // line terms share one x-grid (detail/spectrum_memory.hpp, (S18)).
     scale_ = basis == LineBasis::s_mapped ? Real(mu[0] / p_.a_ref) : Real(0);
     // Terms with lambda_k >= slow_fraction() a_ref carry the line integrals in their
     // leading-edge condition (S12); slower ones take the strip's own (plane) condition, right
@@ -87,8 +89,12 @@ class LineSpectrumResidual {
     // equations have no root (the slow regime, docs/theory.md section 4).
     for (const Real l : lam) {
       line_term_.push_back(l >= slow_fraction() * p_.a_ref);
-      rules_.emplace_back(basis_, scale_, terms, l, l / mu[0] - 1);
+      if (line_term_.back()) {
+        line_.push_back(line_term_.size() - 1);
+        line_lambda_.push_back(l);
+      }
     }
+    rule_.emplace(basis_, scale_, terms, lam[0], lam[0] / mu[0] - 1, tolerance);
     const Real pi = boost::math::constants::pi<Real>();
     const int m = points();
     for (int i = 1; i <= m; ++i) {
@@ -162,75 +168,23 @@ class LineSpectrumResidual {
     return f.f0 * (1 - (f.b + f.kappa) / p_.lengths.retardation[k]);
   }
 
-  /// The strip at y (|y| < l) with the right sides of its leading-edge conditions (S12) from the
-  /// line integrals of the expansions; false where undefined (a <= 0 or x0 = a + b <= 0).
-  bool strip_at(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y,
-                Functions& here, SpectrumStrip<Real>& strip, Real* lhs34 = nullptr) const {
-    here = functions(s, mo, y);
-    const Real x0 = here.a + here.b;
-    if (!(here.a > 0) || !(x0 > 0)) return false;
-    const std::size_t m = rules_.size();
-    std::vector<Real> right(m);
-    for (std::size_t k = 0; k < m; ++k) {
-      if (!line_term_[k] && !(k == 0 && lhs34)) {
-        right[k] = 0;
-        continue;
-      }
-      LineNodes<Real> nd;
-      rules_[k].point(s, y, x0, nd);
-      const std::size_t count = nd.yp.size();
-      std::vector<Real> dq(count), df0(k == 0 && lhs34 ? count : 0);
-      const Real qk = q(here, k);
-      for (std::size_t j = 0; j < count; ++j) {
-        const Functions there = functions(s, mo, nd.yp[j]);
-        dq[j] = q(there, k) - qk;
-        if (!df0.empty()) df0[j] = there.f0 - here.f0;
-      }
-      // (S12): the right side is (L6) at lambda_k of Q_k.
-      right[k] = line_term_[k] ? exterior_right(nd, dq, qk, x0, p_.lengths.retardation[k])
-                               : Real(0);
-      if (!df0.empty()) *lhs34 = near_field_strip(nd, df0, here.f0, here.a);
-    }
-    strip = spectrum_strip(here.a, p_.lengths, &right, p_.c1);
-    return true;
-  }
-
   /// r(x), scaled: (34) by C1 a_ref^2, b and the centroid by a_ref, the load by its target.
-  bool operator()(const Vector& x, Vector& r) const {
-    r.resize(equations());
-    const LineShape<Real> s = shape(x);
-    const LineSpectrumMoments<Real> mo = moments(x);
-    const Real d = penetration(x), c1 = p_.c1, ar = p_.a_ref;
-    const int m = points();
-    for (int i = 0; i < m; ++i) {
-      const Real y = t_[i] * s.l;
-      Functions here;
-      SpectrumStrip<Real> st;
-      Real lhs34 = 0;
-      if (!strip_at(s, mo, y, here, st, &lhs34)) return false;
-      const Real a = here.a, b = st.b;
-      // (34) with (S13): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2] = -C1 a^2/4 - C1 (Pi_g'(0) + e2)
-      //   - C1 b (b - 2 Lambda_1)/2 - C2 y^2/2 + d, with the strip's b.
-      const Real rhs34 =
-          -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 - p_.c2 * y * y / 2 + d;
-      r[i] = (lhs34 - rhs34) / (c1 * ar * ar);
-      r[m + i] = (st.b - here.b) / ar;
-      r[2 * m + i] = st.g0 / (a * a) - here.gamma;
-      r[3 * m + i] = (st.centroid - here.kappa) / ar;
-    }
-    r[4 * m] = load(s, mo) / p_.load_target - 1;
-    for (int i = 0; i < r.size(); ++i)
-      if (!(boost::math::isfinite)(r[i])) return false;
-    return true;
-  }
+  bool operator()(const Vector& x, Vector& r) const { return evaluate(x, r, nullptr); }
 
-  /// No semi-analytic Jacobian: Levenberg-Marquardt forms it by forward differences.
-  bool jacobian(const Vector&, Vector&, Matrix&) const { return false; }
+  /// r(x) and its Jacobian, semi-analytic (docs/theory.md (S17)): the chain rule through the
+  /// expansions at the nodes, held fixed in t = y/l (the integrals are exact to the rule's
+  /// tolerance wherever the nodes sit), the slopes of (L6) (ExteriorSlopes) and the strip's
+  /// derivatives in its right sides and half width (SpectrumStripSlopes). r is the residual of
+  /// operator() bit for bit.
+  bool jacobian(const Vector& x, Vector& r, Matrix& jac) const {
+    jac.setZero(equations(), unknowns());
+    return evaluate(x, r, &jac) && jac.allFinite();
+  }
 
   /// int_{-l}^{l} F0 dy (Eq. 47).
   Real load(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
     std::vector<Real> nodes, weights;
-    rules_[0].load(s, nodes, weights);
+    rule_->load(s, nodes, weights);
     Real sum = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j) sum += weights[j] * functions(s, mo, nodes[j]).f0;
     return 2 * sum;
@@ -240,7 +194,7 @@ class LineSpectrumResidual {
   /// (Eq. 51 strip by strip, (S10), (S15)).
   Real centroid(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
     std::vector<Real> nodes, weights;
-    rules_[0].load(s, nodes, weights);
+    rule_->load(s, nodes, weights);
     Real num = 0, den = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j) {
       const Functions f = functions(s, mo, nodes[j]);
@@ -251,13 +205,210 @@ class LineSpectrumResidual {
   }
 
  private:
+  /// The series' values at one abscissa (T_k(u), k <= N) and the functions there.
+  struct NodeValues {
+    Real a, b, gamma, kappa, f0;
+  };
+
+  /// T_0(u) ... T_N(u) into t (N + 1 values).
+  void chebyshev_values(Real u, Real* t) const {
+    t[0] = 1;
+    if (n_ >= 1) t[1] = u;
+    for (int k = 2; k <= n_; ++k) t[k] = 2 * u * t[k - 1] - t[k - 2];
+  }
+
+  /// Adds to row `row` of jac the derivative of a function g(a, b, gamma, kappa) at one abscissa
+  /// with the Chebyshev values t, given dg/d ln a (ga), dg/db (gb), dg/dgamma (gg), dg/dkappa (gk),
+  /// each times `scale`: d ln a/d alpha_k = T_k, db/d beta_k = a_ref T_k, dgamma/dgamma_k = T_k,
+  /// dkappa/dkappa_k = a_ref T_k.
+  void add_series_row(Matrix& jac, int row, const Real* t, Real ga, Real gb, Real gg, Real gk,
+                      Real scale) const {
+    const Real ar = p_.a_ref;
+    for (int k = 0; k < n_; ++k) jac(row, k) += scale * ga * t[k];
+    for (int k = 0; k <= n_; ++k) {
+      jac(row, n_ + k) += scale * gb * ar * t[k];
+      jac(row, 2 * n_ + 1 + k) += scale * gg * t[k];
+      jac(row, 3 * n_ + 2 + k) += scale * gk * ar * t[k];
+    }
+  }
+
+  bool evaluate(const Vector& x, Vector& r, Matrix* jac) const {
+    using std::log;
+    r.resize(equations());
+    const LineShape<Real> s = shape(x);
+    const LineSpectrumMoments<Real> mo = moments(x);
+    const Real d = penetration(x), c1 = p_.c1, ar = p_.a_ref;
+    const int m = points(), nu = unknowns(), il = 4 * n_ + 3, id = 4 * n_ + 4;
+    const auto& lam = p_.lengths.retardation;
+    const std::size_t mt = lam.size();
+    const int nt = n_ + 1;
+    // Per point: the nodes, the functions there (once for all terms: the terms' node sets differ
+    // in their t-nodes only), (L6) for each line term and its slopes.
+    LineNodes<Real> nd;
+    std::vector<NodeValues> at;
+    std::vector<Real> df0, tv, ti(nt), right(mt);
+    std::vector<ExteriorSlopes<Real>> slopes;
+    detail::SpectrumMemoryWork<Real> work;
+    std::vector<Real> qs(line_.size()), line_right;
+    Matrix dq;
+    Matrix dright;  // d right[k] / d x, row k
+    SpectrumStripSlopes<Real> ss;
+    for (int i = 0; i < m; ++i) {
+      const Real y = t_[i] * s.l;
+      const Functions here = functions(s, mo, y);
+      const Real x0 = here.a + here.b;
+      if (!(here.a > 0) || !(x0 > 0)) return false;
+      nd = LineNodes<Real>{};
+      rule_->point(s, y, x0, nd);
+      const std::size_t count = nd.yp.size();
+      at.resize(count);
+      df0.resize(count);
+      dq.resize(Eigen::Index(count), Eigen::Index(line_.size()));
+      for (std::size_t j = 0; j < count; ++j) {
+        const Functions f = functions(s, mo, nd.yp[j]);
+        at[j] = {f.a, f.b, f.gamma, f.kappa, f.f0};
+        df0[j] = f.f0 - here.f0;
+      }
+      const Real u_here = LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(y));
+      if (jac) {
+        tv.resize(count * nt);
+        for (std::size_t j = 0; j < count; ++j)
+          chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nd.yp[j])),
+                           &tv[j * nt]);
+        chebyshev_values(u_here, ti.data());
+        dright.setZero(Eigen::Index(mt), nu);
+      }
+      // (S12): the right sides are (L6) at lambda_k of Q_k, the line terms' on one x-grid
+      // (S18).
+      for (std::size_t c = 0; c < line_.size(); ++c) {
+        const std::size_t k = line_[c];
+        qs[c] = q(here, k);
+        for (std::size_t j = 0; j < count; ++j)
+          dq(Eigen::Index(j), Eigen::Index(c)) =
+              at[j].f0 * (1 - (at[j].b + at[j].kappa) / lam[k]) - qs[c];
+      }
+      detail::exterior_right_terms<Quadrature>(nd, x0, line_lambda_, dq, qs, line_right, work,
+                                               jac ? &slopes : nullptr);
+      std::fill(right.begin(), right.end(), Real(0));
+      for (std::size_t c = 0; c < line_.size(); ++c) right[line_[c]] = line_right[c];
+      if (jac) {
+        for (std::size_t c = 0; c < line_.size(); ++c) {
+          const std::size_t k = line_[c];
+          const Eigen::Index kk = Eigen::Index(k);
+          // d right_k = sum_j W_j dQ_k(y'_j) + (ends - sum_j W_j) dQ_k(y) + (L6)_x0 dx0
+          //   + (L6)_ln l d ln l, with Q_k = F0 (1 - (b + kappa)/lambda_k): dQ/d ln a = 2 Q,
+          //   dQ/db = dQ/dkappa = -F0/lambda_k, dQ/dgamma = C1 a^2 (1 - (b + kappa)/lambda_k)/2.
+          const auto& sl = slopes[c];
+          Real wsum = 0;
+          for (std::size_t j = 0; j < count; ++j) {
+            const Real w = sl.weight[j];
+            wsum += w;
+            const NodeValues& v = at[j];
+            const Real factor = 1 - (v.b + v.kappa) / lam[k];
+            const Real qj = v.f0 * factor;
+            const Real* t = &tv[j * nt];
+            const Real ga = 2 * qj * w, gb = -v.f0 / lam[k] * w,
+                       gg = c1 * v.a * v.a * factor / 2 * w;
+            for (int cc = 0; cc < n_; ++cc) dright(kk, cc) += ga * t[cc];
+            for (int cc = 0; cc <= n_; ++cc) {
+              dright(kk, n_ + cc) += gb * ar * t[cc];
+              dright(kk, 2 * n_ + 1 + cc) += gg * t[cc];
+              dright(kk, 3 * n_ + 2 + cc) += gb * ar * t[cc];
+            }
+          }
+          const Real e = sl.ends - wsum;
+          const Real qk = qs[c];
+          const Real factor = 1 - (here.b + here.kappa) / lam[k];
+          for (int cc = 0; cc < n_; ++cc) dright(kk, cc) += (e * 2 * qk + sl.x0 * here.a) * ti[cc];
+          for (int cc = 0; cc <= n_; ++cc) {
+            dright(kk, n_ + cc) += (-e * here.f0 / lam[k] + sl.x0) * ar * ti[cc];
+            dright(kk, 2 * n_ + 1 + cc) += e * c1 * here.a * here.a * factor / 2 * ti[cc];
+            dright(kk, 3 * n_ + 2 + cc) += -e * here.f0 / lam[k] * ar * ti[cc];
+          }
+          dright(kk, il) += sl.l;
+        }
+      }
+      // The left side of (34): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2].
+      const Real lhs34 = near_field_strip(nd, df0, here.f0, here.a);
+      const SpectrumStrip<Real> st =
+          spectrum_strip(here.a, p_.lengths, &right, p_.c1, jac ? &ss : nullptr);
+      const Real a = here.a, b = st.b;
+      // (34) with (S13): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2] = -C1 a^2/4 - C1 (Pi_g'(0) + e2)
+      //   - C1 b (b - 2 Lambda_1)/2 - C2 y^2/2 + d, with the strip's b.
+      const Real rhs34 =
+          -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 - p_.c2 * y * y / 2 + d;
+      r[i] = (lhs34 - rhs34) / (c1 * ar * ar);
+      r[m + i] = (st.b - here.b) / ar;
+      r[2 * m + i] = st.g0 / (a * a) - here.gamma;
+      r[3 * m + i] = (st.centroid - here.kappa) / ar;
+      if (!jac) continue;
+      Matrix& J = *jac;
+      // The strip's outputs: d out = sum_k out_right[k] d right_k + out_a da, da = a d ln a.
+      const auto strip_row = [&](const std::vector<Real>& by_right, Real by_a, Real scale,
+                                 int row) {
+        for (std::size_t k = 0; k < mt; ++k)
+          if (line_term_[k] && by_right[k] != 0)
+            for (int c = 0; c < nu; ++c) J(row, c) += scale * by_right[k] * dright(Eigen::Index(k), c);
+        for (int c = 0; c < n_; ++c) J(row, c) += scale * by_a * a * ti[c];
+      };
+      const Real s34 = 1 / (c1 * ar * ar);
+      // (34): lhs - rhs. FP[F0]: sum_j (w_j/s_j) (dF0_j - dF0(y)); the log: -2 F0 d ln a, and
+      // 2 F0 d ln l (d1, d2 scale with l; the finite part does not).
+      Real fsum = 0;
+      for (std::size_t j = 0; j < count; ++j) {
+        const Real w = finite_part_weight(nd, j) * s34;
+        fsum += w;
+        const NodeValues& v = at[j];
+        add_series_row(J, i, &tv[j * nt], 2 * v.f0 * w, 0, c1 * v.a * v.a / 2 * w, 0, 1);
+      }
+      const Real logs = log(4 * nd.d1 / a) + log(4 * nd.d2 / a);
+      add_series_row(J, i, ti.data(), 2 * here.f0 * (logs - fsum / s34) - 2 * here.f0, 0,
+                     c1 * a * a / 2 * (logs - fsum / s34), 0, s34);
+      J(i, il) += 2 * here.f0 * s34;
+      // -rhs34: C1 a^2/4 + C1 pig1 + C1 (b - Lambda_1) db + C2 y^2 d ln l - d.
+      add_series_row(J, i, ti.data(), c1 * a * a / 2, 0, 0, 0, s34);
+      strip_row(ss.pig1, ss.pig1_a, c1 * s34, i);
+      strip_row(ss.b, ss.b_a, c1 * (b - lambda_sum_) * s34, i);
+      J(i, il) += p_.c2 * y * y * s34;
+      J(i, id) -= 1;
+      // b, G0/a^2 and the centroid against the expansions.
+      strip_row(ss.b, ss.b_a, 1 / ar, m + i);
+      add_series_row(J, m + i, ti.data(), 0, -1 / ar, 0, 0, 1);
+      strip_row(ss.g0, ss.g0_a, 1 / (a * a), 2 * m + i);
+      add_series_row(J, 2 * m + i, ti.data(), -2 * st.g0 / (a * a), 0, -1, 0, 1);
+      strip_row(ss.centroid, ss.centroid_a, 1 / ar, 3 * m + i);
+      add_series_row(J, 3 * m + i, ti.data(), 0, 0, 0, -1 / ar, 1);
+    }
+    const Real total = load(s, mo);
+    r[4 * m] = total / p_.load_target - 1;
+    if (jac) {
+      // d load = 2 sum_j w_j dF0(y_j) (nodes fixed in t), and load d ln l.
+      std::vector<Real> nodes, weights;
+      rule_->load(s, nodes, weights);
+      std::vector<Real> t(nt);
+      for (std::size_t j = 0; j < nodes.size(); ++j) {
+        const Functions f = functions(s, mo, nodes[j]);
+        chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nodes[j])),
+                         t.data());
+        add_series_row(*jac, 4 * m, t.data(), 2 * f.f0, 0, c1 * f.a * f.a / 2, 0,
+                       2 * weights[j] / p_.load_target);
+      }
+      (*jac)(4 * m, il) += total / p_.load_target;
+    }
+    for (int i = 0; i < r.size(); ++i)
+      if (!(boost::math::isfinite)(r[i])) return false;
+    return true;
+  }
+
   LineSpectrumProblem<Real> p_;
   int n_;
   LineBasis basis_;
   Real scale_ = 0;
   Real mu_sum_ = 0, lambda_sum_ = 0;
-  std::vector<LineNodeRule<Real, Quadrature>> rules_;
+  std::optional<LineNodeRule<Real, Quadrature>> rule_;
   std::vector<bool> line_term_;
+  std::vector<std::size_t> line_;  ///< the indices of the line terms
+  std::vector<Real> line_lambda_;  ///< their retardation lengths
   std::vector<Real> t_;
 };
 
