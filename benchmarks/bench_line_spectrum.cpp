@@ -1,7 +1,8 @@
 // The line solver for a spectrum (docs/theory.md section 14) on the paper's proportions
 // (C2/C1 = (ln 20 - 1)/25, C1 = 1, load 1), in double, one thread, one cold solve:
-//   BM_line_spectrum/M/N/s: M terms (M = 2: (f, tau) = (3, 0.05), (6, 5); M = 20: f = 0.45,
-//                           tau = 10^-3 ... 10^3 evenly in log) at speed s/10, N Chebyshev terms.
+//   BM_line_spectrum/M/N/s/k: M terms (M = 2: (f, tau) = (3, 0.05), (6, 5); M = 20: f = 0.45,
+//                             tau = 10^-3 ... 10^3 evenly in log) at speed s/10, N Chebyshev
+//                             terms, integrals to 10^-k (0: to rounding).
 // Counters: active terms, iterations, converged (1/0).
 #include <benchmark/benchmark.h>
 
@@ -21,9 +22,11 @@ viscoroll::PronyCreep<double> material(int m) {
 }
 
 void BM_line_spectrum(benchmark::State& state) {
+  viscoroll::LineOptions options{.terms = static_cast<int>(state.range(1))};
+  // The fourth argument k: integrals to 10^-k (LineOptions::quadrature_tolerance; 0: eps).
+  if (state.range(3) > 0) options.quadrature_tolerance = std::pow(10.0, -double(state.range(3)));
   const viscoroll::LineSolver<double, viscoroll::PronyCreep<double>> solver(
-      material(static_cast<int>(state.range(0))),
-      viscoroll::LineOptions{.terms = static_cast<int>(state.range(1))});
+      material(static_cast<int>(state.range(0))), options);
   const double speed = static_cast<double>(state.range(2)) / 10;
   viscoroll::LineSpectrumSolution<double, viscoroll::GaussLegendre<double, 12>> s;
   for (auto _ : state) {
@@ -38,8 +41,14 @@ void BM_line_spectrum(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_line_spectrum)
-    ->Args({2, 4, 50})
-    ->Args({20, 4, 10})
-    ->Args({20, 4, 1000})
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+    ->Args({2, 4, 50, 0})
+    ->Args({20, 4, 1, 0})
+    ->Args({20, 4, 10, 0})
+    ->Args({20, 4, 1000, 0})
+    ->Args({20, 4, 1, 8})
+    ->Args({20, 4, 10, 8})
+    ->Args({20, 4, 1000, 8})
+    ->Args({20, 4, 1, 4})
+    ->Args({20, 4, 10, 4})
+    ->Args({20, 4, 1000, 4})
+    ->Unit(benchmark::kMillisecond);

@@ -83,20 +83,28 @@ void exterior_right_terms(const LineNodes<Real>& nd, Real x0, const std::vector<
     const Real sigma = nd.dist[j] / x0;
     sigma2[Eigen::Index(j)] = sigma * sigma;
   }
+  // k2(j, k) = w_j K_k(s_j) = -w_j (A Omega)(j, k) / x0^2, in blocks of rows small enough that
+  // the product's packing buffers stay on the stack (a heap buffer of this size is mapped and
+  // unmapped at every call).
   Matrix& a = work.a;
   Matrix& b = work.b;
-  a.resize(Eigen::Index(ns), nx);
-  if (slopes) b.resize(Eigen::Index(ns), nx);
-  for (Eigen::Index i = 0; i < nx; ++i) {
-    const Array p2 = (sigma2 + u[i] * u[i]).inverse();
-    a.col(i) = (u[i] * (p2 * p2.sqrt())).matrix();
-    if (slopes) b.col(i) = (a.col(i).array() * p2).matrix();
-  }
-  // k2(j, k) = w_j K_k(s_j) = -w_j (A Omega)(j, k) / x0^2.
   Matrix& k2 = work.k2;
   Matrix& k2_l = work.k2_l;
-  k2.noalias() = a * omega;
-  if (slopes) k2_l.noalias() = b * omega;
+  k2.resize(Eigen::Index(ns), Eigen::Index(m));
+  if (slopes) k2_l.resize(Eigen::Index(ns), Eigen::Index(m));
+  constexpr Eigen::Index block = 32;
+  for (Eigen::Index j0 = 0; j0 < Eigen::Index(ns); j0 += block) {
+    const Eigen::Index rows = std::min(block, Eigen::Index(ns) - j0);
+    a.resize(rows, nx);
+    if (slopes) b.resize(rows, nx);
+    for (Eigen::Index i = 0; i < nx; ++i) {
+      const Array p2 = (sigma2.segment(j0, rows) + u[i] * u[i]).inverse();
+      a.col(i) = (u[i] * (p2 * p2.sqrt())).matrix();
+      if (slopes) b.col(i) = (a.col(i).array() * p2).matrix();
+    }
+    k2.middleRows(j0, rows).noalias() = a * omega;
+    if (slopes) k2_l.middleRows(j0, rows).noalias() = b * omega;
+  }
   // The ends: ln((h + d)/(2 d)) of the near field and the memory's int e^-(x - x0)/lambda
   // x sum_d 1/(g_d (g_d + d)) dx, g_d = hypot(x, d) (exterior_right's), on the same grid.
   const Real d1 = nd.d1, d2 = nd.d2;
@@ -116,6 +124,14 @@ void exterior_right_terms(const LineNodes<Real>& nd, Real x0, const std::vector<
     ends_2_l = omega.transpose() * e_l;
     slopes->resize(m);
   }
+  // The near-field kernel x0^2/(s h (s + h)) = 1/s - 1/h (exterior_right's) and h/x0 per node.
+  Array k1(static_cast<Eigen::Index>(ns)), hu(static_cast<Eigen::Index>(ns));
+  for (std::size_t j = 0; j < ns; ++j) {
+    const Eigen::Index jj = Eigen::Index(j);
+    const Real sigma = nd.dist[j] / x0;
+    hu[jj] = sqrt(1 + sigma2[jj]);
+    k1[jj] = nd.weight[j] / (x0 * sigma * hu[jj] * (sigma + hu[jj]));
+  }
   for (std::size_t k = 0; k < m; ++k) {
     const Eigen::Index kk = Eigen::Index(k);
     Real s1 = 0, s2 = 0, s_l = 0;
@@ -124,17 +140,15 @@ void exterior_right_terms(const LineNodes<Real>& nd, Real x0, const std::vector<
     for (std::size_t j = 0; j < ns; ++j) {
       const Eigen::Index jj = Eigen::Index(j);
       const Real w = nd.weight[j];
-      const Real sigma = nd.dist[j] / x0, hu = sqrt(1 + sigma2[jj]);
-      const Real k1 = w / (x0 * sigma * hu * (sigma + hu));  // 1/s - 1/h, as exterior_right
       const Real k2j = -w * k2(jj, kk) / (x0 * x0);
       const Real dqj = dq(jj, kk);
-      s1 += k1 * dqj;
+      s1 += k1[jj] * dqj;
       s2 += k2j * dqj;
       if (sl) {
-        sl->weight[j] = k1 - k2j;
+        sl->weight[j] = k1[jj] - k2j;
         // d/d ln l: k1 -> -w x0^2/h^3; k2 -> k2 + 3 w sigma^2 (B Omega)/x0^2.
         const Real k2l = k2j + 3 * w * sigma2[jj] * k2_l(jj, kk) / (x0 * x0);
-        s_l += (-w / (x0 * hu * hu * hu) - k2l) * dqj;
+        s_l += (-w / (x0 * hu[jj] * hu[jj] * hu[jj]) - k2l) * dqj;
       }
     }
     const Real memory = s2 + q[k] * ends_2[kk];
