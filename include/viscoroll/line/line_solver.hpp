@@ -369,32 +369,8 @@ class LineSolver {
       numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
       iterations += out.iterations;
       const bool last = k + 1 == stages.size();
-      if (last && least_squares && !out.converged && !out.undefined) {
-        // Stopped short of a root (at a minimum with no root near, without a descent step or at
-        // the iteration limit): the least-squares minimum, whose Newton iteration converges
-        // linearly where the minimum is flat (10 times the iterations).
-        numerics::LeastSquaresOptions<Real> minimisation = settings;
-        minimisation.max_iterations = 10 * settings.max_iterations;
-        out = numerics::least_squares_minimum(res, x, r, minimisation);
-        iterations += out.iterations;
-        // A residual below the root tolerance on the way: Levenberg-Marquardt certifies the root,
-        // or stops at a minimum again, which the minimisation then certifies (at most 4 turns).
-        for (int turn = 0; turn < 4 && out.root_near; ++turn) {
-          out = numerics::levenberg_marquardt(res, x, r, settings);
-          iterations += out.iterations;
-          if (out.converged || out.undefined || !out.minimum) break;
-          out = numerics::least_squares_minimum(res, x, r, minimisation);
-          iterations += out.iterations;
-        }
-        if (out.converged && !out.root_near && r.cwiseAbs().maxCoeff() > root_tolerance())
-          out.reason = "least-squares minimum (no root of the line equations here)";
-        // Below the root tolerance with no step that lowers |r| (the residual's rounding floor):
-        // a root to the accuracy with which the equations are evaluated.
-        if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= root_tolerance()) {
-          out.converged = true;
-          out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
-        }
-      }
+      if (last && least_squares && !out.converged && !out.undefined)
+        out = least_squares_solution(res, x, r, settings, iterations);
       if (out.undefined)
         return failure(u, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
       shape = res.shape(x);
@@ -450,6 +426,39 @@ class LineSolver {
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 
+  /// Where Levenberg-Marquardt stopped short of a root (at a minimum with no root near, without
+  /// a descent step or at the iteration limit): the paper's least-squares solution (Section 7),
+  /// the certified minimum of |r|^2 (numerics::least_squares_minimum), whose Newton iteration
+  /// converges linearly where the minimum is flat (10 times the iterations). Needs the
+  /// residual's semi-analytic Jacobian. Adds the iterations taken to `iterations`.
+  template <class Residual>
+  static numerics::LeastSquaresOutcome least_squares_solution(
+      const Residual& res, Vector& x, Vector& r, const numerics::LeastSquaresOptions<Real>& settings,
+      int& iterations) {
+    numerics::LeastSquaresOptions<Real> minimisation = settings;
+    minimisation.max_iterations = 10 * settings.max_iterations;
+    numerics::LeastSquaresOutcome out = numerics::least_squares_minimum(res, x, r, minimisation);
+    iterations += out.iterations;
+    // A residual below the root tolerance on the way: Levenberg-Marquardt certifies the root, or
+    // stops at a minimum again, which the minimisation then certifies (at most 4 turns).
+    for (int turn = 0; turn < 4 && out.root_near; ++turn) {
+      out = numerics::levenberg_marquardt(res, x, r, settings);
+      iterations += out.iterations;
+      if (out.converged || out.undefined || !out.minimum) break;
+      out = numerics::least_squares_minimum(res, x, r, minimisation);
+      iterations += out.iterations;
+    }
+    if (out.converged && !out.root_near && r.cwiseAbs().maxCoeff() > root_tolerance())
+      out.reason = "least-squares minimum (no root of the line equations here)";
+    // Below the root tolerance with no step that lowers |r| (the residual's rounding floor): a
+    // root to the accuracy with which the equations are evaluated.
+    if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= root_tolerance()) {
+      out.converged = true;
+      out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
+    }
+    return out;
+  }
+
   /// max |J^+ r| at x (the minimum-norm least-squares Newton correction, by the singular value
   /// decomposition of the semi-analytic Jacobian): the error estimate of a root. Infinite where
   /// the Jacobian is undefined.
@@ -474,13 +483,15 @@ class LineSolver {
     sol.residual = rmax;
     sol.chi = rolling_friction(sol);
     add_warnings(sol, u);
-    if (converged && !root)
-      sol.warnings.push_back(
-          "the line equations have no root here: a least-squares minimum with max |r| = " +
-          std::to_string(double(rmax)) +
-          " (the line theory does not close at this speed and discretisation; "
-          "docs/line-solver.md, \"Least-squares minima\")");
+    if (converged && !root) sol.warnings.push_back(minimum_warning(rmax));
     return sol;
+  }
+
+  static std::string minimum_warning(Real rmax) {
+    return "the line equations have no root here: a least-squares minimum with max |r| = " +
+           std::to_string(double(rmax)) +
+           " (the line theory does not close at this speed and discretisation; "
+           "docs/line-solver.md, \"Least-squares minima\")";
   }
 
   Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c,
@@ -663,7 +674,10 @@ class LineSolver {
     Vector r;
     numerics::LeastSquaresOutcome out;
     std::optional<LineSpectrumResidual<Real, Quadrature>> last;
-    for (const int n : continuation_stages(options_.terms)) {
+    const bool least_squares =
+        options_.least_squares && options_.jacobian == LineJacobian::analytic;
+    const std::vector<int> stages = continuation_stages(options_.terms);
+    for (const int n : stages) {
       last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance));
       Vector x = last->pack(shape, moments, d);
       r.resize(last->equations());
@@ -675,6 +689,9 @@ class LineSolver {
       }
       out = numerics::levenberg_marquardt(*last, x, r, settings);
       iterations += out.iterations;
+      // The last stage: where the equations have no root, the least-squares solution.
+      if (n == stages.back() && least_squares && !out.converged && !out.undefined)
+        out = least_squares_solution(*last, x, r, settings, iterations);
       shape = last->shape(x);
       moments = last->moments(x);
       d = last->penetration(x);
@@ -684,8 +701,10 @@ class LineSolver {
     sol.shape = shape;
     sol.moments = moments;
     sol.d = d;
-    sol.converged = out.converged && !out.undefined && rmax <= root_tolerance();
-    sol.root = sol.converged;
+    // A certified least-squares minimum is converged (as the one-term solver's); without the
+    // minimisation (LineOptions::least_squares off, or a difference Jacobian) only a root is.
+    sol.converged = out.converged && !out.undefined && (least_squares || rmax <= root_tolerance());
+    sol.root = sol.converged && rmax <= root_tolerance();
     sol.reason = out.converged && !sol.converged
                      ? "a least-squares minimum (the spectrum's line equations have no root here)"
                      : out.reason;
@@ -700,6 +719,7 @@ class LineSolver {
       sol.root = false;
       sol.reason = "a root of the line equations that is not a contact (d, a(0) or l not positive)";
     }
+    if (sol.converged && !sol.root) sol.warnings.push_back(minimum_warning(rmax));
     for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
       sol.warnings.push_back(std::move(w));
     // The caller's units (as solve()).
