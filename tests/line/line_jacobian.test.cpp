@@ -15,6 +15,8 @@
 #include <viscoroll/line/paper_leading_edge.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 
+#include "support/jacobian_check.hpp"
+
 namespace {
 
 using viscoroll::LineJacobian;
@@ -47,27 +49,7 @@ double worst_column_error(double vtau, int terms, double offset) {
   const auto res = solver.residual(scene);
   Eigen::VectorXd x = res.pack(sol.shape, sol.d);
   for (int k = 0; k < x.size(); ++k) x[k] += offset * std::sin(3.0 * k + 1);
-  const int m = res.equations(), n = res.unknowns();
-  Eigen::VectorXd r(m), rp(m), rm(m), r_op(m);
-  Eigen::MatrixXd jac(m, n);
-  REQUIRE(res.jacobian(x, r, jac));
-  REQUIRE(res(x, r_op));
-  CHECK((r - r_op).cwiseAbs().maxCoeff() == 0);  // the same residual, bit for bit
-  double worst = 0;
-  for (int j = 0; j < n; ++j) {
-    // h = 1e-5: the central difference's truncation error, O(h^2), and its rounding error,
-    // O(eps/h), are both below 1e-9 of a column (changing h tenfold either way moves the
-    // measured error by less than 1e-9).
-    const double h = 1e-5 * std::max(1.0, std::abs(x[j]));
-    Eigen::VectorXd xp = x, xm = x;
-    xp[j] += h;
-    xm[j] -= h;
-    REQUIRE(res(xp, rp));
-    REQUIRE(res(xm, rm));
-    const Eigen::VectorXd column = (rp - rm) / (2 * h);
-    worst = std::max(worst, (jac.col(j) - column).norm() / column.norm());
-  }
-  return worst;
+  return viscoroll_test::worst_column_error(res, x);
 }
 
 }  // namespace

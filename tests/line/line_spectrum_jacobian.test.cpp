@@ -19,6 +19,8 @@
 #include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+#include "support/jacobian_check.hpp"
+
 namespace {
 
 using Residual = viscoroll::LineSpectrumResidual<double, viscoroll::GaussLegendre<double, 12>>;
@@ -53,27 +55,7 @@ double worst_column_error(double v, int terms, double offset) {
   const viscoroll::LineSpectrumMoments<double> moments{{0.05}, {0.02}};
   Eigen::VectorXd x = res.pack(shape, moments, slow.d * ratio * ratio);
   for (int k = 0; k < x.size(); ++k) x[k] += offset * std::sin(3.0 * k + 1);
-  const int m = res.equations(), n = res.unknowns();
-  Eigen::VectorXd r(m), rp(m), rm(m), r_op(m);
-  Eigen::MatrixXd jac(m, n);
-  REQUIRE(res.jacobian(x, r, jac));
-  REQUIRE(res(x, r_op));
-  CHECK((r - r_op).cwiseAbs().maxCoeff() == 0);  // the same residual, bit for bit
-  double worst = 0;
-  for (int j = 0; j < n; ++j) {
-    // h = 1e-5: central differences' truncation O(h^2) and rounding O(eps/h), each ~1e-10 of a
-    // column.
-    const double h = 1e-5 * std::max(1.0, std::abs(x[j]));
-    Eigen::VectorXd xp = x, xm = x;
-    xp[j] += h;
-    xm[j] -= h;
-    REQUIRE(res(xp, rp));
-    REQUIRE(res(xm, rm));
-    const Eigen::VectorXd column = (rp - rm) / (2 * h);
-    CAPTURE(j);
-    worst = std::max(worst, (jac.col(j) - column).norm() / column.norm());
-  }
-  return worst;
+  return viscoroll_test::worst_column_error(res, x);
 }
 
 }  // namespace
