@@ -435,7 +435,8 @@ struct Problem {
   std::optional<viscoroll::PronyRelaxation<double>> prony;
   std::optional<viscoroll::ShiftLaw<double>> shift;
   std::vector<double> temperatures;
-  /// The line method's settings (--oversampling, --basis, --max-iterations): LineOptions.
+  /// The line method's settings (--oversampling, --basis, --max-iterations,
+  /// --quadrature-tolerance): LineOptions.
   viscoroll::LineOptions line;
   /// A roller of finite length from the scene file (bem only; docs/rollers.md), with its tilt.
   std::optional<std::variant<viscoroll::Tilted<viscoroll::CrownedCylinder<double>>,
@@ -444,11 +445,13 @@ struct Problem {
       roller;
 };
 
-/// --oversampling, --basis and --max-iterations into LineOptions (their defaults where not given).
+/// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
+/// defaults where not given).
 viscoroll::LineOptions line_options(const SolveOptions& o) {
   viscoroll::LineOptions line;
   if (o.oversampling) line.oversampling = static_cast<int>(*o.oversampling);
   if (o.max_iterations) line.max_iterations = static_cast<int>(*o.max_iterations);
+  if (o.quadrature_tolerance) line.quadrature_tolerance = *o.quadrature_tolerance;
   if (o.basis == "s") line.basis = viscoroll::LineBasis::s;
   if (o.basis == "mapped") line.basis = viscoroll::LineBasis::s_mapped;
   return line;
@@ -955,7 +958,9 @@ int main(int argc, char** argv) {
     if (problem.method != Method::line)
       for (const auto& [given, key] : {std::pair{bool(options.oversampling), "--oversampling"},
                                        std::pair{!options.basis.empty(), "--basis"},
-                                       std::pair{bool(options.max_iterations), "--max-iterations"}})
+                                       std::pair{bool(options.max_iterations), "--max-iterations"},
+                                       std::pair{bool(options.quadrature_tolerance),
+                                                 "--quadrature-tolerance"}})
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");

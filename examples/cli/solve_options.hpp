@@ -62,16 +62,20 @@ struct SolveOptions {
   std::optional<long> oversampling;
   std::string basis;  ///< empty: the default, t2
   std::optional<long> max_iterations;
+  /// --quadrature-tolerance TOL (0 <= TOL <= 1e-4; 0: every integral to rounding): the line
+  /// method's LineOptions::quadrature_tolerance.
+  std::optional<double> quadrature_tolerance;
 };
 
 inline std::string usage() {
   return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
          "[--csv FILE] [--plot DIR] [--threads N] [--oversampling K] [--basis t2|s|mapped] "
-         "[--max-iterations N]\n"
+         "[--max-iterations N] [--quadrature-tolerance TOL]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
          "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
-         "[--plot DIR] [--profile-out FILE.csv] [--threads N]";
+         "[--plot DIR] [--profile-out FILE.csv] [--threads N] [--oversampling K] "
+         "[--basis t2|s|mapped] [--max-iterations N] [--quadrature-tolerance TOL]";
 }
 
 /// A finite number, the whole of `text`.
@@ -105,7 +109,7 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
       "--method", "--mu-d", "--nu",      "--f",          "--tau",   "--speed",
       "--c1",     "--c2",   "--load",    "--grid",       "--scene", "--format",
       "--csv",    "--plot", "--threads", "--temperature", "--oversampling", "--basis",
-      "--max-iterations", "--profile-out"};
+      "--max-iterations", "--profile-out", "--quadrature-tolerance"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -146,7 +150,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
             "--grid, --speed, --temperature, --format, --csv, --plot, --profile-out, --threads, "
-            "--oversampling, --basis and --max-iterations may go with it)");
+            "--oversampling, --basis, --max-iterations and --quadrature-tolerance may go with "
+            "it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -196,6 +201,14 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
   };
   if (given.count("--oversampling")) o.oversampling = integer("--oversampling", 1, 8);
   if (given.count("--max-iterations")) o.max_iterations = integer("--max-iterations", 1, 100000);
+  if (given.count("--quadrature-tolerance")) {
+    const double tol = parse_number("--quadrature-tolerance", given["--quadrature-tolerance"]);
+    if (!(tol >= 0 && tol <= 1e-4))
+      throw std::invalid_argument(
+          "viscoroll-solve: --quadrature-tolerance expects 0 <= TOL <= 1e-4 (0: every integral "
+          "to rounding), got '" + std::string(given["--quadrature-tolerance"]) + "'");
+    o.quadrature_tolerance = tol;
+  }
   if (given.count("--basis")) {
     o.basis = std::string(given["--basis"]);
     if (o.basis != "t2" && o.basis != "s" && o.basis != "mapped")
