@@ -30,7 +30,8 @@ struct SweepOptions {
   /// Never more threads than chunks are started.
   unsigned threads = 0;
   /// Speeds per chunk of continuation. Smaller chunks spread better over threads; longer ones
-  /// continue further (a cold start costs several times a seeded one for the line solver).
+  /// continue further. The line solver runs its continuation stages from a seed as from the cold
+  /// start, so a seed saves it little time (docs/performance.md, "Where a sweep's time goes").
   std::size_t chunk = 16;
   /// Called after each solve with (solves completed, total), from the worker threads, one call at
   /// a time (under a lock). May be empty.
