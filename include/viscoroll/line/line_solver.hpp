@@ -329,7 +329,9 @@ class LineSolver {
     // keeps the iteration on the branch of smooth solutions (a start far from it at large N can
     // land on another root of the discrete equations, docs/line-solver.md). The first stage
     // starts from the seed re-expanded to its terms, so that a seed decides no more than where
-    // the two-term iteration begins: the answer is the cold start's to the iteration's tolerance.
+    // the two-term iteration begins: the answer is the cold start's to the iteration's tolerance,
+    // except in the slow regime where the two-term equations have several roots or stop short of
+    // one from one start only (docs/line-solver.md, "Continuation in speed").
     const std::vector<int> stages = continuation_stages(options_.terms);
     if (start != nullptr && start->shape.alpha.size() > 0) {
       // A solution of a nearby scene.
