@@ -249,8 +249,7 @@ class LineSpectrumResidual {
     std::vector<Real> df0, tv, ti(nt), right(mt);
     std::vector<ExteriorSlopes<Real>> slopes;
     detail::SpectrumMemoryWork<Real> work;
-    std::vector<Real> qs(line_.size()), line_right;
-    Matrix dq;
+    std::vector<Real> qs(line_.size()), line_right, f0s, bks;
     Matrix dright;  // d right[k] / d x, row k
     SpectrumStripSlopes<Real> ss;
     for (int i = 0; i < m; ++i) {
@@ -263,11 +262,14 @@ class LineSpectrumResidual {
       const std::size_t count = nd.yp.size();
       at.resize(count);
       df0.resize(count);
-      dq.resize(Eigen::Index(count), Eigen::Index(line_.size()));
+      f0s.resize(count);
+      bks.resize(count);
       for (std::size_t j = 0; j < count; ++j) {
         const Functions f = functions(s, mo, nd.yp[j]);
         at[j] = {f.a, f.b, f.gamma, f.kappa, f.f0};
         df0[j] = f.f0 - here.f0;
+        f0s[j] = f.f0;
+        bks[j] = f.b + f.kappa;
       }
       const Real u_here = LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(y));
       if (jac) {
@@ -280,15 +282,9 @@ class LineSpectrumResidual {
       }
       // (S12): the right sides are (L6) at lambda_k of Q_k, the line terms' on one x-grid
       // (S18).
-      for (std::size_t c = 0; c < line_.size(); ++c) {
-        const std::size_t k = line_[c];
-        qs[c] = q(here, k);
-        for (std::size_t j = 0; j < count; ++j)
-          dq(Eigen::Index(j), Eigen::Index(c)) =
-              at[j].f0 * (1 - (at[j].b + at[j].kappa) / lam[k]) - qs[c];
-      }
-      detail::exterior_right_terms<Quadrature>(nd, x0, line_lambda_, dq, qs, line_right, work,
-                                               jac ? &slopes : nullptr);
+      for (std::size_t c = 0; c < line_.size(); ++c) qs[c] = q(here, line_[c]);
+      detail::exterior_right_terms<Quadrature>(nd, x0, line_lambda_, f0s, bks, qs, line_right,
+                                               work, jac ? &slopes : nullptr);
       std::fill(right.begin(), right.end(), Real(0));
       for (std::size_t c = 0; c < line_.size(); ++c) right[line_[c]] = line_right[c];
       if (jac) {
