@@ -91,6 +91,16 @@ def test_the_shipped_prony_scene_agrees_with_the_command_line(scenes_dir, viscor
     scene = vr.Scene.from_json(path, temperature=0.0)
     assert scene.temperature == 0.0 and isinstance(scene.material, vr.Prony)
     assert len(scene.material.terms) == 12 and isinstance(scene.material.shift, vr.WLF)
+    # The same computation in two builds (the extension module and the program are compiled
+    # apart, and their roundings differ): the BEM's and the plane's answers agree to rounding; the
+    # spectrum's line equations are solved to the iteration's stopping step, eps^0.6 (1 + max|x|)
+    # = 4e-10 (1 + max|x|) in the unknowns, and a(0) sums N + 1 = 5 of them: at this scene's root
+    # (l/a(0) near 3, a residual 8e-10 at the stop) the two builds' a(0) differ by 4.7e-9.
+    # The iteration's path (its count, its last residual and which stopping test ended it)
+    # differs between the builds there: one stops on Levenberg-Marquardt's step test, the other at
+    # the residual's floor (docs/line-solver.md).
+    tolerance = 1e-8 if method == "line" else 1e-12
+    skipped = {"seconds"} | ({"iterations", "residual", "reason"} if method == "line" else set())
     for speed in speeds:  # one run per speed: a cold start, as solve()
         args = [str(viscoroll_solve), "--scene", str(path), "--temperature", "0",
                 "--method", method, "--speed", repr(speed)]
@@ -102,9 +112,9 @@ def test_the_shipped_prony_scene_agrees_with_the_command_line(scenes_dir, viscor
         got = vr.solve(scene, method=method, grid=grid, speed=speed).as_dict()
         assert list(got) == list(want), "the command line's fields in its order"
         for key, value in want.items():
-            if key == "seconds":
+            if key in skipped:
                 continue
             if isinstance(value, float):
-                assert relative(got[key], value) <= 1e-12 or got[key] == value, key
+                assert relative(got[key], value) <= tolerance or got[key] == value, key
             else:
                 assert got[key] == value, key
