@@ -233,11 +233,10 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
     // (S12): the row (without its 1/(1 + s_k)) is -A_k / (C1 a^2 e^z K0(z) Psi_k), and
     // A_k = Psi_k right[k].
     if (right != nullptr) {
-      right_factor[k] = -1 / (c1 * a * a *
-                              (special::bessel_k0_scaled(1 / lam) + special::bessel_k1_scaled(1 / lam)));
-      rhs[m + k] = -(*right)[k] /
-                   (c1 * a * a * (special::bessel_k0_scaled(1 / lam) +
-                                  special::bessel_k1_scaled(1 / lam)));
+      const Real scale =
+          c1 * a * a * (special::bessel_k0_scaled(1 / lam) + special::bessel_k1_scaled(1 / lam));
+      right_factor[k] = -1 / scale;
+      rhs[m + k] = -(*right)[k] / scale;
     }
   }
   // Pi_g(0) = sum_i A_i w_i = Lambda_1 (S4), with sum_i A_i = 1 and sum_i omega_i = N(0) = 0:
