@@ -205,11 +205,6 @@ class LineSpectrumResidual {
   }
 
  private:
-  /// The series' values at one abscissa (T_k(u), k <= N) and the functions there.
-  struct NodeValues {
-    Real a, b, gamma, kappa, f0;
-  };
-
   /// T_0(u) ... T_N(u) into t (N + 1 values).
   void chebyshev_values(Real u, Real* t) const {
     t[0] = 1;
@@ -245,11 +240,11 @@ class LineSpectrumResidual {
     // Per point: the nodes, the functions there (once for all terms: the terms' node sets differ
     // in their t-nodes only), (L6) for each line term and its slopes.
     LineNodes<Real> nd;
-    std::vector<NodeValues> at;
-    std::vector<Real> df0, tv, ti(nt), right(mt);
+    // At the nodes: a, F0, F0(y') - F0(y), b + kappa; tv: T_0..T_N at each node.
+    std::vector<Real> as, f0s, df0, bks, tv, ti(nt), right(mt);
     std::vector<ExteriorSlopes<Real>> slopes;
     detail::SpectrumMemoryWork<Real> work;
-    std::vector<Real> qs(line_.size()), line_right, f0s, bks;
+    std::vector<Real> qs(line_.size()), line_right;
     Matrix dright;  // d right[k] / d x, row k
     SpectrumStripSlopes<Real> ss;
     for (int i = 0; i < m; ++i) {
@@ -260,15 +255,15 @@ class LineSpectrumResidual {
       nd = LineNodes<Real>{};
       rule_->point(s, y, x0, nd);
       const std::size_t count = nd.yp.size();
-      at.resize(count);
-      df0.resize(count);
+      as.resize(count);
       f0s.resize(count);
+      df0.resize(count);
       bks.resize(count);
       for (std::size_t j = 0; j < count; ++j) {
         const Functions f = functions(s, mo, nd.yp[j]);
-        at[j] = {f.a, f.b, f.gamma, f.kappa, f.f0};
-        df0[j] = f.f0 - here.f0;
+        as[j] = f.a;
         f0s[j] = f.f0;
+        df0[j] = f.f0 - here.f0;
         bks[j] = f.b + f.kappa;
       }
       const Real u_here = LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(y));
@@ -295,32 +290,22 @@ class LineSpectrumResidual {
           //   + (L6)_ln l d ln l, with Q_k = F0 (1 - (b + kappa)/lambda_k): dQ/d ln a = 2 Q,
           //   dQ/db = dQ/dkappa = -F0/lambda_k, dQ/dgamma = C1 a^2 (1 - (b + kappa)/lambda_k)/2.
           const auto& sl = slopes[c];
+          const int row = int(k);
           Real wsum = 0;
           for (std::size_t j = 0; j < count; ++j) {
             const Real w = sl.weight[j];
             wsum += w;
-            const NodeValues& v = at[j];
-            const Real factor = 1 - (v.b + v.kappa) / lam[k];
-            const Real qj = v.f0 * factor;
-            const Real* t = &tv[j * nt];
-            const Real ga = 2 * qj * w, gb = -v.f0 / lam[k] * w,
-                       gg = c1 * v.a * v.a * factor / 2 * w;
-            for (int cc = 0; cc < n_; ++cc) dright(kk, cc) += ga * t[cc];
-            for (int cc = 0; cc <= n_; ++cc) {
-              dright(kk, n_ + cc) += gb * ar * t[cc];
-              dright(kk, 2 * n_ + 1 + cc) += gg * t[cc];
-              dright(kk, 3 * n_ + 2 + cc) += gb * ar * t[cc];
-            }
+            const Real factor = 1 - bks[j] / lam[k];
+            const Real gb = -f0s[j] / lam[k] * w;
+            add_series_row(dright, row, &tv[j * nt], 2 * (f0s[j] * factor) * w, gb,
+                           c1 * as[j] * as[j] * factor / 2 * w, gb, 1);
           }
+          // At the point itself, with x0 = a + b: dx0/d ln a = a, dx0/db = 1.
           const Real e = sl.ends - wsum;
-          const Real qk = qs[c];
           const Real factor = 1 - (here.b + here.kappa) / lam[k];
-          for (int cc = 0; cc < n_; ++cc) dright(kk, cc) += (e * 2 * qk + sl.x0 * here.a) * ti[cc];
-          for (int cc = 0; cc <= n_; ++cc) {
-            dright(kk, n_ + cc) += (-e * here.f0 / lam[k] + sl.x0) * ar * ti[cc];
-            dright(kk, 2 * n_ + 1 + cc) += e * c1 * here.a * here.a * factor / 2 * ti[cc];
-            dright(kk, 3 * n_ + 2 + cc) += -e * here.f0 / lam[k] * ar * ti[cc];
-          }
+          const Real gk = -e * here.f0 / lam[k];
+          add_series_row(dright, row, ti.data(), e * 2 * qs[c] + sl.x0 * here.a, gk + sl.x0,
+                         e * c1 * here.a * here.a * factor / 2, gk, 1);
           dright(kk, il) += sl.l;
         }
       }
@@ -354,8 +339,7 @@ class LineSpectrumResidual {
       for (std::size_t j = 0; j < count; ++j) {
         const Real w = finite_part_weight(nd, j) * s34;
         fsum += w;
-        const NodeValues& v = at[j];
-        add_series_row(J, i, &tv[j * nt], 2 * v.f0 * w, 0, c1 * v.a * v.a / 2 * w, 0, 1);
+        add_series_row(J, i, &tv[j * nt], 2 * f0s[j] * w, 0, c1 * as[j] * as[j] / 2 * w, 0, 1);
       }
       const Real logs = log(4 * nd.d1 / a) + log(4 * nd.d2 / a);
       add_series_row(J, i, ti.data(), 2 * here.f0 * (logs - fsum / s34) - 2 * here.f0, 0,
