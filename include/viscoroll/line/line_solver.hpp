@@ -240,6 +240,19 @@ class LineSolver {
   /// 64 sqrt(eps), the minimisers' stop at a root and the solution's flag.
   static Real root_tolerance() { return numerics::default_root_tolerance<Real>(); }
 
+  /// The Levenberg-Marquardt settings of every stage (the Jacobian semi-analytic unless
+  /// LineOptions::jacobian asks for differences).
+  numerics::LeastSquaresOptions<Real> iteration_settings() const {
+    return {.max_iterations = options_.max_iterations,
+            .root_tolerance = root_tolerance(),
+            .analytic_jacobian = options_.jacobian == LineJacobian::analytic};
+  }
+  /// Whether a stop short of a root goes on to the certified least-squares minimum
+  /// (least_squares_solution): LineOptions::least_squares, with the semi-analytic Jacobian.
+  bool minimises() const {
+    return options_.least_squares && options_.jacobian == LineJacobian::analytic;
+  }
+
   /// rolling() from `start` where it can seed the iteration, else from the cold start; a seeded
   /// iteration that stops short is run again from the cold start. The result's warnings say when
   /// a seed was set aside, so that a bad seed never decides the answer.
@@ -347,12 +360,8 @@ class LineSolver {
     // The paper's least-squares solution where the equations have no root (the last stage, with
     // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
     // Levenberg-Marquardt certifies it.
-    const bool least_squares =
-        options_.least_squares && options_.jacobian == LineJacobian::analytic;
-    const numerics::LeastSquaresOptions<Real> settings{
-        .max_iterations = options_.max_iterations,
-        .root_tolerance = root_tolerance(),
-        .analytic_jacobian = options_.jacobian == LineJacobian::analytic};
+    const bool least_squares = minimises();
+    const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
     int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
       const LineResidual<Real, Quadrature> res(prob, stages[k], options_.basis,
@@ -668,16 +677,12 @@ class LineSolver {
       moments = {{ps.g0 / (A * A * eff.a0 * eff.a0)}, {ps.centroid / eff.a0}};
       d = eff.d * ratio * ratio;
     }
-    const numerics::LeastSquaresOptions<Real> settings{.max_iterations = options_.max_iterations,
-                                                       .root_tolerance = root_tolerance(),
-                                                       .analytic_jacobian = options_.jacobian ==
-                                                                            LineJacobian::analytic};
+    const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
     int iterations = 0;
     Vector r;
     numerics::LeastSquaresOutcome out;
     std::optional<LineSpectrumResidual<Real, Quadrature>> last;
-    const bool least_squares =
-        options_.least_squares && options_.jacobian == LineJacobian::analytic;
+    const bool least_squares = minimises();
     const std::vector<int> stages = continuation_stages(options_.terms);
     for (const int n : stages) {
       last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance));
