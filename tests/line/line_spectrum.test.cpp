@@ -13,22 +13,18 @@
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+#include "support/spectrum_scene.hpp"
+
 namespace {
 
 using viscoroll::LineOptions;
-using viscoroll::LineScene;
 using viscoroll::LineSolver;
 using viscoroll::PronyCreep;
 using viscoroll::PronyTerm;
 using viscoroll::StandardLinearSolid;
 
-/// The paper's proportions: C2/C1 = (ln 20 - 1)/25 (l0 = 5 a0), C1 = 1, load 1.
-LineScene<double> paper_scene(double speed) {
-  return {.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 1.0, .speed = speed};
-}
-
-/// The two-term material of the tests: (f, tau) = (3, 0.05), (6, 5), mu_D = 1, nu = 0.5.
-PronyCreep<double> two_terms() { return PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}}); }
+using viscoroll::testing::spectrum_scene;  // the paper's proportions, load 1
+using viscoroll::testing::two_term_creep;  // (f, tau) = (3, 0.05), (6, 5)
 
 double rel(double x, double y) { return std::abs(x - y) / std::abs(y); }
 
@@ -71,9 +67,9 @@ TEST_CASE("line spectrum: one active term is the standard linear solid's solver"
   const LineSolver<double, StandardLinearSolid<double>> sls(
       StandardLinearSolid<double>(1 / (2 * pi * c), 0.0, 3.0, 0.05), options);
   for (const double speed : {2.0, 20.0, 200.0}) {
-    const auto ref = sls.solve(paper_scene(speed));
+    const auto ref = sls.solve(spectrum_scene(speed));
     for (const auto& material : {one, late}) {
-      const auto s = LineSolver<double, PronyCreep<double>>(material, options).solve(paper_scene(speed));
+      const auto s = LineSolver<double, PronyCreep<double>>(material, options).solve(spectrum_scene(speed));
       CAPTURE(speed, material.memory_terms().size());
       REQUIRE(s.converged);
       CHECK(s.active_terms == 1);
@@ -93,12 +89,12 @@ TEST_CASE("line spectrum: a term of negligible weight changes nothing", "[line][
   // truncation of the paper's (44) applied to each term separately (Q_k = F0 - F1/lambda_k) moved
   // a(0) by 2% and chi by 5% here.
   const LineOptions options{.terms = 4};
-  const LineSolver<double, PronyCreep<double>> two(two_terms(), options);
+  const LineSolver<double, PronyCreep<double>> two(two_term_creep(), options);
   const LineSolver<double, PronyCreep<double>> three(
       PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}, {1e-9, 0.5}}), options);
   for (const double speed : {5.0, 20.0}) {
-    const auto a = two.solve(paper_scene(speed));
-    const auto b = three.solve(paper_scene(speed));
+    const auto a = two.solve(spectrum_scene(speed));
+    const auto b = three.solve(spectrum_scene(speed));
     CAPTURE(speed);
     REQUIRE(a.converged);
     REQUIRE(b.converged);
@@ -115,13 +111,13 @@ TEST_CASE("line spectrum: a term of negligible weight changes nothing", "[line][
 TEST_CASE("line spectrum: slow and fast limits are the static contacts of the long-term and "
           "instantaneous compliances",
           "[line][spectrum]") {
-  const auto material = two_terms();
+  const auto material = two_term_creep();
   const LineSolver<double, PronyCreep<double>> solver(material, LineOptions{.terms = 4});
   const double c = material.instantaneous_compliance();
-  const auto scene = paper_scene(1.0);
+  const auto scene = spectrum_scene(1.0);
   // Every V tau_k below sqrt(eps) a0 (relaxed) or beyond the glassy limit (not started).
-  const auto slow = solver.solve(paper_scene(1e-12));
-  const auto fast = solver.solve(paper_scene(1e30));
+  const auto slow = solver.solve(spectrum_scene(1e-12));
+  const auto fast = solver.solve(spectrum_scene(1e30));
   const auto long_term = viscoroll::static_line_contact(scene.c1, scene.c2, c * 10 * scene.load);
   const auto glassy = viscoroll::static_line_contact(scene.c1, scene.c2, c * scene.load);
   for (const auto& [s, ref] : {std::pair{slow, long_term}, std::pair{fast, glassy}}) {
@@ -140,7 +136,7 @@ TEST_CASE("line spectrum: a long roller has the plane spectrum's strip at y = 0"
   // load per length F0(0)/(c (1 + F)). The line theory's correction there is what the standard
   // linear solid's shows at the same l/a (measured: a(0) 6e-4, b(0) 4e-3 a(0) for a term with
   // V tau = 0.25 over lengths of 30; a(0) 5e-4 and b(0) 3.8e-3 a(0) for the spectrum).
-  const auto material = two_terms();
+  const auto material = two_term_creep();
   const LineSolver<double, PronyCreep<double>> line(material, LineOptions{.terms = 4});
   const viscoroll::PlaneSolver<double, PronyCreep<double>> plane(material);
   const double c = material.instantaneous_compliance();
@@ -157,9 +153,9 @@ TEST_CASE("line spectrum: a long roller has the plane spectrum's strip at y = 0"
 
 TEST_CASE("line spectrum: bad settings are rejected by name", "[line][spectrum]") {
   const LineSolver<double, PronyCreep<double>> mapped(
-      two_terms(), LineOptions{.terms = 4, .basis = viscoroll::LineBasis::s_mapped});
-  CHECK_THROWS_WITH(mapped.solve(paper_scene(5.0)), Catch::Contains("basis"));
-  const LineSolver<double, PronyCreep<double>> solver(two_terms(), LineOptions{.terms = 4});
+      two_term_creep(), LineOptions{.terms = 4, .basis = viscoroll::LineBasis::s_mapped});
+  CHECK_THROWS_WITH(mapped.solve(spectrum_scene(5.0)), Catch::Contains("basis"));
+  const LineSolver<double, PronyCreep<double>> solver(two_term_creep(), LineOptions{.terms = 4});
   CHECK_THROWS_WITH(solver.solve({.c1 = 1.0, .c2 = 1.0, .load = 1.0, .speed = 1.0}),
                     Catch::Contains("c2"));
 }
@@ -169,13 +165,13 @@ TEST_CASE("line spectrum: agrees with the BEM within the line theory's error", "
   // linear solid's measured line-theory errors on the paper's scene (docs/validation.md): d
   // 0.5%, chi 1%, a(0) and l 3%, b(0) 7% (6.4% at V tau/a0 = 0.1). Measured here: d 0.28%,
   // chi 0.26%, a(0) 1.7%, l 1.9%, b(0) 5.5% at speed 5.
-  const auto material = two_terms();
+  const auto material = two_term_creep();
   const LineSolver<double, PronyCreep<double>> line(material, LineOptions{.terms = 4});
   viscoroll::BemOptions options;
   options.grid = 32;
   const viscoroll::BemSolver<double, PronyCreep<double>> bem(material, options);
   for (const double speed : {5.0, 20.0}) {
-    const auto scene = paper_scene(speed);
+    const auto scene = spectrum_scene(speed);
     const auto s = line.solve(scene);
     const auto e = bem.solve(viscoroll::BemScene<double>{
         .c1 = scene.c1, .c2 = scene.c2, .load = scene.load, .speed = scene.speed});

@@ -1,21 +1,18 @@
 // The line solver for a spectrum where its equations have no root: the certified least-squares
 // minimum (docs/line-solver.md, "Least-squares minima"; the semi-analytic Jacobian of
-// docs/theory.md (S17) makes it available), on the two-term material of line_spectrum.test.cpp
+// docs/theory.md (S17) makes it available), on the two-term material of support/spectrum_scene.hpp
 // at V = 1, N = 6, where Levenberg-Marquardt stops with max |r| ~ 1e-4.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/material/prony.hpp>
 
+#include "support/spectrum_scene.hpp"
+
 namespace {
 
-viscoroll::LineScene<double> paper_scene(double speed) {
-  return {.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 1.0, .speed = speed};
-}
-
-viscoroll::PronyCreep<double> two_terms() {
-  return viscoroll::PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}});
-}
+using viscoroll::testing::spectrum_scene;
+using viscoroll::testing::two_term_creep;
 
 double rel(double x, double y) { return std::abs(x - y) / std::abs(y); }
 
@@ -24,8 +21,8 @@ double rel(double x, double y) { return std::abs(x - y) / std::abs(y); }
 TEST_CASE("line spectrum: a certified least-squares minimum where the equations have no root",
           "[line][spectrum]") {
   using Solver = viscoroll::LineSolver<double, viscoroll::PronyCreep<double>>;
-  const Solver six(two_terms(), viscoroll::LineOptions{.terms = 6});
-  const auto minimum = six.solve(paper_scene(1.0));
+  const Solver six(two_term_creep(), viscoroll::LineOptions{.terms = 6});
+  const auto minimum = six.solve(spectrum_scene(1.0));
   CAPTURE(minimum.reason, minimum.residual);
   CHECK(minimum.converged);
   CHECK_FALSE(minimum.root);
@@ -35,16 +32,16 @@ TEST_CASE("line spectrum: a certified least-squares minimum where the equations 
   CHECK(warned);
   // The minimum is the same contact as the root at N = 4 to the discretisation's change between
   // N = 4 and 6 (measured 0.13% in a(0), 0.1% in l, 2e-5 in d and chi; docs/validation.md).
-  const Solver four(two_terms(), viscoroll::LineOptions{.terms = 4});
-  const auto root = four.solve(paper_scene(1.0));
+  const Solver four(two_term_creep(), viscoroll::LineOptions{.terms = 4});
+  const auto root = four.solve(spectrum_scene(1.0));
   REQUIRE(root.root);
   CHECK(rel(minimum.a(0), root.a(0)) < 1e-2);
   CHECK(rel(minimum.l(), root.l()) < 1e-2);
   CHECK(rel(minimum.d, root.d) < 1e-3);
   CHECK(rel(minimum.chi, root.chi) < 1e-3);
   // Without the minimisation the same stop is reported, not returned as converged.
-  const Solver plain(two_terms(), viscoroll::LineOptions{.terms = 6, .least_squares = false});
-  const auto stop = plain.solve(paper_scene(1.0));
+  const Solver plain(two_term_creep(), viscoroll::LineOptions{.terms = 6, .least_squares = false});
+  const auto stop = plain.solve(spectrum_scene(1.0));
   CHECK_FALSE(stop.converged);
   CHECK_FALSE(stop.root);
 }
