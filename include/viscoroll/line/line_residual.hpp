@@ -3,7 +3,10 @@
 // Panek & Kalker (1980), Sections 5 and 7. The unknowns are the coefficients of a(y) and b(y)
 // (line_shape.hpp), ln l and d; the equations, at collocation points y_i = l t_i, are
 //   (34)  FP[F0](y) + F0(y) ln[16 (l^2 - y^2)/a^2]
-//           + C1 a^2/4 + (C1/2) b (b - 2 V) + C2 y^2/2 - d = 0
+//           + C1 a^2/4 + (C1/2) b (b - 2 V) + h(y) - d = 0
+//         h(y) the roller's drop along its axis, a RollerDrop policy: C2 y^2/2 (Eq. 27, the
+//         default ParabolicDrop), or a symmetric roller profile (line_profile.hpp, docs/theory.md
+//         (RP1): h enters only here)
 //   (LE)  the leading-edge condition C1 {a b e^z K1(z) - G e^z K0(z)} = right side, z = a/V,
 //         Eq. (42) with the right side of a LeadingEdgeCondition policy: by default (L6) of
 //         docs/theory.md section 4,
@@ -21,6 +24,7 @@
 #include <cmath>
 #include <concepts>
 #include <limits>
+#include <utility>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
@@ -67,15 +71,36 @@ struct ExteriorLeadingEdge {
   }
 };
 
+/// The roller's drop h(y) along its axis in (34), a policy of LineResidual: a D provides
+/// `Real drop(const LineProblem<Real>&, Real y) const` and `Real drop_slope(const
+/// LineProblem<Real>&, Real y) const`, h(y) and h'(y) in the residual's units for |y| < l, h even
+/// in y (the residual collocates on y > 0). Models: ParabolicDrop (the paper's Eq. 27, from
+/// LineProblem::c2) and ProfileDrop (line_profile.hpp, a symmetric RollerProfile).
+template <class D, class Real>
+concept RollerDrop = requires(const D& d, const LineProblem<Real>& p, Real y) {
+  { d.drop(p, y) } -> std::convertible_to<Real>;
+  { d.drop_slope(p, y) } -> std::convertible_to<Real>;
+};
+
+/// The paper's drop h = C2 y^2/2 (Eq. 27), C2 = LineProblem::c2.
+struct ParabolicDrop {
+  template <class Real>
+  Real drop(const LineProblem<Real>& p, Real y) const { return p.c2 * y * y / 2; }
+  template <class Real>
+  Real drop_slope(const LineProblem<Real>& p, Real y) const { return p.c2 * y; }
+};
+
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,
-/// `LeadingEdge` a LeadingEdgeCondition.
-template <RealScalar Real, class Quadrature, class LeadingEdge = ExteriorLeadingEdge>
+/// `LeadingEdge` a LeadingEdgeCondition, `Drop` a RollerDrop.
+template <RealScalar Real, class Quadrature, class LeadingEdge = ExteriorLeadingEdge,
+          class Drop = ParabolicDrop>
 requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature>
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
 class LineResidual {
  public:
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+  using drop_type = Drop;
 
   /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
   /// balances each block: (34) at N + 1 points and the load (47) fix the N coefficients of a, l and
@@ -84,9 +109,11 @@ class LineResidual {
   /// solution is the paper's (Section 7; docs/theory.md section 10).
   /// quadrature_tolerance: the relative accuracy of every integral (LineNodeRule); 0, the default,
   /// the scalar's epsilon (every integral exact to rounding).
+  /// drop: the roller's h(y) (the paper's C2 y^2/2 by default).
   LineResidual(LineProblem<Real> problem, int terms, LineBasis basis = LineBasis::t_squared,
-               int oversampling = 1, Real quadrature_tolerance = Real(0))
+               int oversampling = 1, Real quadrature_tolerance = Real(0), Drop drop = Drop{})
       : p_(problem),
+        drop_(std::move(drop)),
         n_(terms),
         oversampling_(oversampling),
         basis_(basis),
@@ -203,7 +230,7 @@ class LineResidual {
     const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
     // (34), scaled by C1 a_ref^2.
     const Real lhs34 = near_field_strip(nd, df0, here.f0, a);
-    const Real rhs34 = -c1 * a * a / 4 - c1 * b * (b - 2 * v) / 2 - p_.c2 * y * y / 2 + d;
+    const Real rhs34 = -c1 * a * a / 4 - c1 * b * (b - 2 * v) / 2 - drop_.drop(p_, y) + d;
     r34 = (lhs34 - rhs34) / (c1 * p_.a_ref * p_.a_ref);
     // Leading-edge condition.
     const Real z = a / v;
@@ -265,6 +292,7 @@ class LineResidual {
   }
 
   LineProblem<Real> p_;
+  Drop drop_;
   int n_;
   int oversampling_;
   LineBasis basis_;
@@ -273,10 +301,10 @@ class LineResidual {
   std::vector<Real> t_;
 };
 
-template <RealScalar Real, class Quadrature, class LeadingEdge>
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
 requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature>
-auto LineResidual<Real, Quadrature, LeadingEdge>::operator()(const Vector& x, Vector& r) const
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector& x, Vector& r) const
     -> bool {
   r.resize(equations());
   const LineShape<Real> s = shape(x);
@@ -298,10 +326,10 @@ auto LineResidual<Real, Quadrature, LeadingEdge>::operator()(const Vector& x, Ve
   return true;
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge>
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
 requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature>
-auto LineResidual<Real, Quadrature, LeadingEdge>::jacobian(const Vector& x, Vector& r,
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x, Vector& r,
                                                            Matrix& jac) const
     -> bool requires std::same_as<LeadingEdge, ExteriorLeadingEdge> {
   using std::log;
@@ -360,12 +388,12 @@ auto LineResidual<Real, Quadrature, LeadingEdge>::jacobian(const Vector& x, Vect
     dright += slopes.x0 * (da_i + db_i);
     dright[lam] += slopes.l;
     // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
-    //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - C2 y^2/2 + d.
+    //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - h(y) + d, dh/d ln l = h'(y) y at fixed t.
     const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
     dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
     dlhs[lam] += 2 * here.f0;
     Vector drhs = -(c1 * a / 2) * da_i - c1 * (b - v) * db_i;
-    drhs[lam] -= p_.c2 * y * y;
+    drhs[lam] -= drop_.drop_slope(p_, y) * y;
     drhs[del] += scale34;
     const Vector dr34 = (dlhs - drhs) / scale34;
     // Leading edge: rle = (bessel - right) / (slope a_ref).

@@ -24,12 +24,15 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <utility>
 #include <vector>
 #include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/line_profile.hpp>
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
@@ -156,6 +159,111 @@ class LineSolver {
   /// with converged == false and the reason.
   Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const;
 
+  /// Solves the rolling line contact of a symmetric roller profile (roller/profile.hpp: a crowned
+  /// cylinder, a logarithmic crown, a symmetric table, the ellipsoid) on a material with one
+  /// memory term: (34) with the profile's drop h(y) (docs/theory.md section 16, (RP1)), every
+  /// other equation as for the ellipsoid. The long-term and the glassy contact are the static
+  /// profile contact (static_profile_contact.hpp) of the long-term and of the instantaneous
+  /// compliance, expanded in the solver's representation; `a_long_term`, `l_long_term`,
+  /// `d_long_term` are the long-term one's a(0), l and d. Throws std::invalid_argument for an
+  /// invalid scene (LineProfileScene::validate); a contact that reaches the roller's body end, or
+  /// a static contact that does not converge, is returned not converged with the reason.
+  template <RollerProfile Profile>
+  Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
+      requires SingleTimeModel<Material> && std::same_as<typename Profile::real_type, Real> {
+    scene.validate();
+    const Profile& roller = scene.roller;
+    const Real c = material_.instantaneous_compliance();
+    const PronyTerm<Real> memory = detail::single_memory_term(material_);
+    const Real f = memory.f;
+    const Real c1 = roller.c1();
+    const auto inputs = [&] {
+      return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
+             ", speed = " + detail::format_value(scene.speed) +
+             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+             ", tau = " + detail::format_value(memory.tau) + ", a roller profile";
+    };
+    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+    const StaticProfileContact<Real> slow_c =
+        static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
+    const auto k1 = binary<Real>(c1);
+    if (!slow_c.converged) {
+      Solution sol = solution(Units{c1, Real(0), 0, 0},
+                              StaticLineContact<Real>{slow_c.a_ref, slow_c.half_length(), slow_c.d},
+                              c, f, Real(0),
+                              LineShape<Real>{slow_c.a_ref, slow_c.half_length(), {Real(0)}, {Real(0)}},
+                              slow_c.d);
+      sol.converged = false;
+      sol.root = false;
+      sol.reason = "the long-term static contact of the profile: " + slow_c.reason;
+      sol.warnings = slow_c.warnings;
+      return sol;
+    }
+    // Units: curvature C1's power of two, length a power of two near the long-term a(0).
+    const Real a0_caller = slow_c.a(slow_c.centre());
+    const Units u{k1.m, Real(0), k1.e, binary<Real>(a0_caller).e};
+    const int d_unit = u.curvature + 2 * u.length;
+    const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
+      LineShape<Real> shape = profile_line_shape(s, a0_caller, 2 * profile_static_terms, b_over);
+      shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
+      shape.l = times_power_of_two(shape.l, -u.length);
+      return std::pair<LineShape<Real>, Real>{std::move(shape),
+                                              times_power_of_two(s.d, -d_unit)};
+    };
+    const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
+    const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
+    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
+    const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
+                                     const char* reason) {
+      Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
+      sol.reason = reason;
+      add_warnings(sol, u, false);
+      return sol;
+    };
+    Solution sol = [&] {
+      if constexpr (Material::is_viscoelastic) {
+        if (f > 0 && vtau > 0) {
+          if (strip_is_glassy(vtau, f, slow.a0)) {
+            const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
+            if (fast.converged)
+              return static_solution(in_units(fast, Real(0)), Real(0),
+                                     "glassy limit (static profile contact)");
+          }
+          if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
+            const LineProblem<Real> prob{u.c1, Real(0), vtau, f, slow.a0, slow.l,
+                                         times_power_of_two((1 + f) * c * scene.load,
+                                                            -(d_unit + u.length))};
+            // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
+            // the long-term one's, b the plane's.
+            const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
+              if (ps.a == 1) return in_units(slow_c, ps.b);
+              const auto s = static_profile_contact(roller, (1 + f) * c * scene.load * ps.a * ps.a,
+                                                    profile_static_terms);
+              return in_units(s.converged ? s : slow_c, ps.b);
+            };
+            const LineScene<Real> plane{.c1 = c1, .c2 = Real(0), .load = scene.load,
+                                        .speed = scene.speed};
+            return rolling_from(plane, u, slow, prob, c, start,
+                                ProfileDrop<Profile>(roller, u.length, u.curvature), cold);
+          }
+        }
+      }
+      return static_solution(long_term, f,
+                             "static (static profile contact)");
+    }();
+    // A contact that reaches the roller's body end is outside the line theory (issue: a sharp
+    // end's pressure peak), reported, not returned as a plausible number.
+    const Real l_caller = times_power_of_two(sol.shape.l, u.length);
+    if (sol.converged && !(l_caller < roller.y_max() && -l_caller > roller.y_min())) {
+      sol.converged = false;
+      sol.reason = "the contact reaches the roller's end (l = " + detail::format_value(l_caller) +
+                   ", the body ends at y = " + detail::format_value(roller.y_max()) +
+                   "): outside the line theory";
+    }
+    return in_caller_units(std::move(sol), u, c1, inputs);
+  }
+
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
   LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const
       requires SingleTimeModel<Material> {
@@ -226,6 +334,10 @@ class LineSolver {
     return sol;
   }
 
+  /// The coefficients of the static profile contacts behind a profile's solve (its default,
+  /// docs/theory.md (G5)); their shapes are expanded in twice as many for the line solver.
+  static constexpr int profile_static_terms = 12;
+
   /// Terms of the continuation stages that lead to `terms`: 2, 4, 8, 16, 32 below
   /// it, then `terms` itself (docs/line-solver.md, "Continuation in N").
   static std::vector<int> continuation_stages(int terms) {
@@ -253,13 +365,35 @@ class LineSolver {
     return options_.least_squares && options_.jacobian == LineJacobian::analytic;
   }
 
+  /// a/a0 and b/a0 of the plane solution at V tau/a0 = v (Eq. P5), the seed of the cold start.
+  struct PlaneSeed {
+    Real a, b;
+  };
+  /// The cold start of the paper's ellipsoid: the static contact (48) shrunk and shifted as the
+  /// plane solution at the same V tau/a0 (3-D widths scale as (1 + f)^(-1/3), the plane's as
+  /// (1 + f)^(-1/2): a by (a/a0)^(2/3), l with it, d by its square; b the plane's).
+  struct EllipseStart {
+    std::pair<LineShape<Real>, Real> operator()(const StaticLineContact<Real>& slow,
+                                                const PlaneSeed& ps) const {
+      using std::log;
+      using std::pow;
+      const Real ratio = pow(ps.a, Real(2) / 3);
+      return {LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b}},
+              slow.d * ratio * ratio};
+    }
+  };
+
   /// rolling() from `start` where it can seed the iteration, else from the cold start; a seeded
   /// iteration that stops short is run again from the cold start. The result's warnings say when
   /// a seed was set aside, so that a bad seed never decides the answer.
+  /// `drop` the roller's h(y) (a RollerDrop), `cold` the cold start's shape and penetration
+  /// from the plane seed (ColdStart).
+  template <class Drop = ParabolicDrop, class ColdStart = EllipseStart>
   Solution rolling_from(const LineScene<Real>& scene, const Units& u,
-                        const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
-                        const Solution* given) const {
-    if (given == nullptr) return rolling(scene, u, slow, c, f, vtau, nullptr);
+                        const StaticLineContact<Real>& slow, const LineProblem<Real>& prob,
+                        Real c, const Solution* given, const Drop& drop = {},
+                        const ColdStart& cold = {}) const {
+    if (given == nullptr) return rolling(scene, u, slow, prob, c, nullptr, drop, cold);
     // The seed in the solver's units (a shape from a far scene may leave the range there).
     Solution seed = *given;
     seed.shape.a_ref = times_power_of_two(seed.shape.a_ref, -u.length);
@@ -267,18 +401,18 @@ class LineSolver {
     seed.d = times_power_of_two(seed.d, -u.curvature - 2 * u.length);
     const Solution* start = &seed;
     if (!usable_seed(*start)) {
-      Solution cold = rolling(scene, u, slow, c, f, vtau, nullptr);
-      cold.warnings.push_back(
+      Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold);
+      again.warnings.push_back(
           "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
           "solved from the cold start");
-      return cold;
+      return again;
     }
-    Solution seeded = rolling(scene, u, slow, c, f, vtau, start);
+    Solution seeded = rolling(scene, u, slow, prob, c, start, drop, cold);
     if (seeded.converged) return seeded;
-    Solution cold = rolling(scene, u, slow, c, f, vtau, nullptr);
-    cold.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
-                            "): solved again from the cold start");
-    return cold;
+    Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold);
+    again.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
+                             "): solved again from the cold start");
+    return again;
   }
 
   /// A converged solution whose shape and penetration are finite.
@@ -294,10 +428,6 @@ class LineSolver {
            s.shape.a_ref >= (std::numeric_limits<Real>::min)() && (boost::math::isfinite)(s.d);
   }
 
-  /// a/a0 and b/a0 of the plane solution at V tau/a0 = v (Eq. P5), the seed of the cold start.
-  struct PlaneSeed {
-    Real a, b;
-  };
   /// The plane solver with the line scene's material, curvature and speed, and the load whose
   /// long-term half width is the line's a0 (in the caller's units, where they are representable);
   /// else an equivalent scene of order-one numbers with the same f and V tau/a0 (the plane
@@ -330,12 +460,12 @@ class LineSolver {
     return {ps.a / ps.a_long_term, ps.b / ps.a_long_term};
   }
 
+  template <class Drop, class ColdStart>
   Solution rolling(const LineScene<Real>& scene, const Units& u,
-                   const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
-                   const Solution* start) const {
-    using std::log;
-    using std::pow;
-    const LineProblem<Real> prob = problem(u, slow, f, vtau);
+                   const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
+                   const Solution* start, const Drop& drop, const ColdStart& cold) const {
+    using Residual = LineResidual<Real, Quadrature, ExteriorLeadingEdge, Drop>;
+    const Real f = prob.f, vtau = prob.vtau;
     LineShape<Real> shape;
     Real d;
     // Continuation in N from two terms up: each stage starts from the previous solution, which
@@ -352,10 +482,7 @@ class LineSolver {
       d = start->d;
     } else {
       // The static contact shrunk and shifted as the plane solution at the same V tau/a0.
-      const PlaneSeed ps = plane_seed(scene, u, slow, c, f, vtau);
-      const Real ratio = pow(ps.a, Real(2) / 3);  // 3-D widths scale as (1+f)^(-1/3)
-      shape = LineShape<Real>{slow.a0, slow.l * ratio, {log(ratio)}, {ps.b}};
-      d = slow.d * ratio * ratio;
+      std::tie(shape, d) = cold(slow, plane_seed(scene, u, slow, c, f, vtau));
     }
     // The paper's least-squares solution where the equations have no root (the last stage, with
     // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
@@ -364,15 +491,17 @@ class LineSolver {
     const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
     int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
-      const LineResidual<Real, Quadrature> res(prob, stages[k], options_.basis,
-                                               options_.oversampling, Real(options_.quadrature_tolerance));
+      const Residual res(prob, stages[k], options_.basis, options_.oversampling,
+                         Real(options_.quadrature_tolerance), drop);
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
         // The cold start's plane seed outside the domain: the static contact (a seed given by
         // the caller is not replaced here: rolling_from runs the cold start and says so).
-        if (k == 0 && start == nullptr)
-          x = res.pack(LineShape<Real>{slow.a0, slow.l, {Real(0)}, {Real(0)}}, slow.d);
+        if (k == 0 && start == nullptr) {
+          const auto [s0, d0] = cold(slow, PlaneSeed{Real(1), Real(0)});
+          x = res.pack(s0, d0);
+        }
         if (!res(x, r))
           return failure(u, slow, c, f, vtau, res, x, "initial guess outside the domain",
                          iterations);
@@ -432,8 +561,8 @@ class LineSolver {
       }
     }
     return failure(u, slow, c, f, vtau,
-                   LineResidual<Real, Quadrature>(prob, options_.terms, options_.basis,
-                                                  options_.oversampling, Real(options_.quadrature_tolerance)),
+                   Residual(prob, options_.terms, options_.basis, options_.oversampling,
+                            Real(options_.quadrature_tolerance), drop),
                    Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
   }
 
@@ -473,7 +602,8 @@ class LineSolver {
   /// max |J^+ r| at x (the minimum-norm least-squares Newton correction, by the singular value
   /// decomposition of the semi-analytic Jacobian): the error estimate of a root. Infinite where
   /// the Jacobian is undefined.
-  static Real newton_correction(const LineResidual<Real, Quadrature>& res, const Vector& x) {
+  template <class Residual>
+  static Real newton_correction(const Residual& res, const Vector& x) {
     Vector r;
     Matrix jac;
     if (!res.jacobian(x, r, jac)) return std::numeric_limits<Real>::infinity();
@@ -481,8 +611,9 @@ class LineSolver {
     return svd.solve(r).cwiseAbs().maxCoeff();
   }
 
+  template <class Residual>
   Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
-                Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
+                Real vtau, const Residual& res, const Vector& x,
                 const Vector& r, bool converged, std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
@@ -493,7 +624,7 @@ class LineSolver {
     sol.iterations = iterations;
     sol.residual = rmax;
     sol.chi = rolling_friction(sol);
-    add_warnings(sol, u);
+    add_warnings(sol, u, std::same_as<typename Residual::drop_type, ParabolicDrop>);
     if (converged && !root) sol.warnings.push_back(minimum_warning(rmax));
     return sol;
   }
@@ -505,8 +636,9 @@ class LineSolver {
            "docs/line-solver.md, \"Least-squares minima\")";
   }
 
+  template <class Residual>
   Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c,
-                   Real f, Real vtau, const LineResidual<Real, Quadrature>& res, const Vector& x,
+                   Real f, Real vtau, const Residual& res, const Vector& x,
                    const char* reason, int iterations) const {
     Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
     return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
@@ -534,12 +666,39 @@ class LineSolver {
     return sol.c1 * num / den;
   }
 
-  /// The domain of the line theory (line_domain_warnings) and the bounds of the rolling contact
-  /// (line_bound_warnings, to the root tolerance, plus the residual of a least-squares minimum,
-  /// which meets the equations only to it).
-  static void add_warnings(Solution& sol, const Units& u) {
+  /// The solution in the caller's units: a converged one's numbers each normal and finite (b and
+  /// chi may be zero), else an error naming the inputs (docs/errors.md); a non-converged one
+  /// scaled back as it is.
+  template <class Inputs>
+  static Solution in_caller_units(Solution sol, const Units& u, Real c1, const Inputs& inputs) {
+    const int length = u.length, curvature = u.curvature;
+    const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
+      if (!sol.converged) return times_power_of_two(x, exponent);
+      return detail::representable(x, exponent, what, inputs, zero_allowed);
+    };
+    const Real a_origin = sol.shape.a(Real(0)), b_origin = sol.shape.b(Real(0));
+    in(a_origin, length, "the half width a(0)", false);
+    in(b_origin, length, "the offset b(0)", true);
+    sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
+    sol.shape.l = in(sol.shape.l, length, "the half length l", false);
+    sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
+    sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
+    sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
+    sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
+    sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
+    sol.vtau = in(sol.vtau, length, "V tau", true);
+    sol.c1 = c1;
+    return sol;
+  }
+
+  /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid (`bounds`),
+  /// the bounds of the rolling contact (line_bound_warnings, to the root tolerance, plus the
+  /// residual of a least-squares minimum, which meets the equations only to it); for a profile
+  /// (B2), (B3) are not derived (docs/theory.md (RP10)).
+  static void add_warnings(Solution& sol, const Units& u, bool bounds = true) {
     for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
       sol.warnings.push_back(std::move(w));
+    if (!bounds) return;
     const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
     for (auto& w : line_bound_warnings(sol, tolerance)) sol.warnings.push_back(std::move(w));
   }
@@ -800,32 +959,13 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
           // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
           return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
         }
-        if (vtau > eps * slow.a0) return rolling_from(scene, u, slow, c, f, vtau, start);
+        if (vtau > eps * slow.a0)
+          return rolling_from(scene, u, slow, problem(u, slow, f, vtau), c, start);
       }
     }
     return closed_form(u, slow, slow, c, f, "static (closed form)");
   }();
-  // The solution in the caller's units: a converged one's numbers each normal and finite (b and
-  // chi may be zero), else an error naming the inputs (docs/errors.md); a non-converged one
-  // scaled back as it is.
-  const int length = u.length, curvature = u.curvature;
-  const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
-    if (!sol.converged) return times_power_of_two(x, exponent);
-    return detail::representable(x, exponent, what, inputs, zero_allowed);
-  };
-  const Real a_origin = sol.shape.a(Real(0)), b_origin = sol.shape.b(Real(0));
-  in(a_origin, length, "the half width a(0)", false);
-  in(b_origin, length, "the offset b(0)", true);
-  sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
-  sol.shape.l = in(sol.shape.l, length, "the half length l", false);
-  sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
-  sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
-  sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
-  sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
-  sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
-  sol.vtau = in(sol.vtau, length, "V tau", true);
-  sol.c1 = scene.c1;
-  return sol;
+  return in_caller_units(std::move(sol), u, scene.c1, inputs);
   }
 }
 
