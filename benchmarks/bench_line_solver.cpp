@@ -8,6 +8,11 @@
 //                       LineOptions::quadrature_tolerance = 10^-k (k = 0: the default, eps);
 //   BM_line_solve_fast/s: a cold solve with LineOptions::fast() (docs/performance.md, "The fast
 //                       setting") at V tau/a0 = s/1000;
+//   BM_line_crowned_roller/N/s/k: a cold solve of the crowned roller of docs/validation.md
+//                       ("Rolling rollers of any profile": C1 = 1, flat part 10, crown radius 20,
+//                       f = 2, (1 + f) c P = 0.3, long-term static a0 = 0.2878) at V tau/a0 =
+//                       s/1000 with `terms` = N and quadrature_tolerance = 10^-k (k = 0: eps);
+//                       counters d and chi, to compare the settings' answers;
 //   BM_line_sweep/N:    the figures' sweep (examples/panek_kalker): 101 speeds V tau/a0 = 10^-3 ...
 //                       10^3, evenly spaced in log, each seeded with the last converged solution.
 // Counters: iterations, converged (1/0) and, for the sweep, the speeds that did not converge (the
@@ -63,6 +68,27 @@ void BM_line_solve_tolerance(benchmark::State& state) {
 
 void BM_line_solve_fast(benchmark::State& state) {
   solve_with(state, viscoroll::LineOptions::fast(), static_cast<double>(state.range(0)) / 1000);
+}
+
+void BM_line_crowned_roller(benchmark::State& state) {
+  const viscoroll::StandardLinearSolid<double> rubber(1, 0.5, 2, 1);
+  viscoroll::LineOptions options;
+  options.terms = static_cast<int>(state.range(0));
+  options.quadrature_tolerance = state.range(2) == 0 ? 0.0 : std::pow(10.0, -state.range(2));
+  const viscoroll::LineSolverD solver(rubber, options);
+  const viscoroll::LineProfileScene<viscoroll::CrownedCylinder<double>> scene{
+      viscoroll::CrownedCylinder<double>(1.0, 10.0, 20.0),
+      0.3 / (3 * rubber.instantaneous_compliance()),
+      0.2878 * static_cast<double>(state.range(1)) / 1000};
+  viscoroll::LineSolverD::Solution s;
+  for (auto _ : state) {
+    s = solver.solve(scene);
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["iterations"] = s.iterations;
+  state.counters["converged"] = s.converged ? 1 : 0;
+  state.counters["d"] = s.d;
+  state.counters["chi"] = s.chi;
 }
 
 void BM_line_sweep(benchmark::State& state) {
@@ -121,4 +147,7 @@ BENCHMARK(BM_line_solve_tolerance)
     ->Args({5, 1000, 4})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_solve_fast)->Arg(10)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_crowned_roller)
+    ->ArgsProduct({{5, 8}, {100, 1000, 10000}, {0, 4}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_sweep)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);

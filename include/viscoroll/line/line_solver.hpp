@@ -257,7 +257,7 @@ class LineSolver {
     const Real l_caller = times_power_of_two(sol.shape.l, u.length);
     if (sol.converged && !(l_caller < roller.y_max() && -l_caller > roller.y_min())) {
       sol.converged = false;
-      sol.reason = "the contact reaches the roller's end (l = " + detail::format_value(l_caller) +
+      sol.reason = "the contact reaches the roller's body end (l = " + detail::format_value(l_caller) +
                    ", the body ends at y = " + detail::format_value(roller.y_max()) +
                    "): outside the line theory";
     }

@@ -1,0 +1,84 @@
+// line_vs_bem_profile: the rolling line solver for a roller profile (docs/theory.md section 16)
+// against the BEM on the proportions of the static validation (docs/validation.md, "Crowned
+// rollers": C1 = 1, crown radius 20, flat part 0, 10, 20; a logarithmic crown of length 16), on a
+// standard linear solid (f = 2, tau = 1) under the long-term compliance load (1 + f) c P = 0.3,
+// at V tau/a0 = 0 (the long-term static limit), 0.1, 1, 10 and the glassy limit (10^4), a0 the
+// long-term static a(0). Prints the table of docs/validation.md ("Rolling rollers of any
+// profile"): d, chi, a(0), b(0), the contact's end y+, F0(0) and the edge peak f0_max/F0(0) of
+// both, the largest difference of F0(y) over the BEM's rows in units of its peak, and the line
+// solve's wall time; with an output directory, the F0(y) of both for the figure.
+//   line_vs_bem_profile [grid [terms [out_dir]]]   (defaults 24, 8)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <viscoroll/bem/bem_profile.hpp>
+#include <viscoroll/bem/bem_solver.hpp>
+#include <viscoroll/line/line_solver.hpp>
+
+namespace {
+
+using Material = viscoroll::StandardLinearSolid<double>;
+
+template <class Profile>
+void compare(const char* name, const Profile& roller, int grid, int terms, const std::string& out) {
+  const Material m(1.0, 0.5, 2.0, 1.0);
+  const double c = m.instantaneous_compliance(), load = 0.3 / (3 * c);
+  const viscoroll::LineSolver<double, Material> line(m, viscoroll::LineOptions{.terms = terms});
+  const auto still = line.solve(viscoroll::LineProfileScene<Profile>{roller, load, 0.0});
+  const double a0 = still.shape.a(0.0);
+  for (const double v : {0.0, 0.1, 1.0, 10.0, 1e4}) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto s = line.solve(viscoroll::LineProfileScene<Profile>{roller, load, v * a0});
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    viscoroll::BemOptions options;
+    options.grid = grid;
+    const auto e = viscoroll::BemSolver(m, options).solve(viscoroll::bem_scene(roller, m, load, v * a0));
+    const auto along = e.along_roller();
+    // The line's load per length at the BEM's rows (F0/((1 + f) c), as along_roller).
+    const auto line_f0 = [&](double y) {
+      return std::abs(y) < s.shape.l ? s.functions(y).f0 / (s.compliance * (1 + s.f)) : 0.0;
+    };
+    double worst = 0, centre_row = 0, bem_a0 = 0, bem_b0 = 0;
+    for (std::size_t i = 0; i < along.y.size(); ++i) {
+      worst = std::max(worst, std::abs(line_f0(along.y[i]) - along.f0[i]));
+      if (std::abs(along.y[i]) < 1e-12) {
+        centre_row = along.f0[i];
+        bem_a0 = along.a[i];
+        bem_b0 = along.b[i];
+      }
+    }
+    const auto la = s.along_roller(801);
+    const double line_centre = line_f0(0.0);
+    std::printf("| %s | %g | %.5f / %.5f | %.5f / %.5f | %.4f / %.4f | %.4f / %.4f | %.3f / %.3f | "
+                "%.5f / %.5f | %.3f / %.3f | %.1f%% | %.3f |%s%s\n",
+                name, v, e.d, s.d, e.chi, s.chi, bem_a0, s.shape.a(0.0), bem_b0, s.shape.b(0.0),
+                along.y_plus, s.shape.l, centre_row, line_centre, along.f0_max / centre_row,
+                la.f0_max / line_centre, 100 * worst / along.f0_max, seconds,
+                s.converged && e.converged ? "" : " NOT CONVERGED", s.root ? "" : " (minimum)");
+    if (!out.empty()) {
+      std::ofstream csv(out + "/" + name + "_v" + std::to_string(v) + ".csv");
+      csv << "y,f0_bem,f0_line\n";
+      for (std::size_t i = 0; i < along.y.size(); ++i)
+        csv << along.y[i] << ',' << along.f0[i] << ',' << line_f0(along.y[i]) << '\n';
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int grid = argc > 1 ? std::atoi(argv[1]) : 24;
+  const int terms = argc > 2 ? std::atoi(argv[2]) : 8;
+  const std::string out = argc > 3 ? argv[3] : "";
+  std::printf("| roller | V tau/a0 | d: BEM / line | chi: BEM / line | a(0) | b(0) | y+ | F0(0) | "
+              "f0_max/F0(0) | max dF0 | line s |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  compare("barrel", viscoroll::CrownedCylinder<double>(1.0, 0.0, 20.0), grid, terms, out);
+  compare("flat10", viscoroll::CrownedCylinder<double>(1.0, 10.0, 20.0), grid, terms, out);
+  compare("flat20", viscoroll::CrownedCylinder<double>(1.0, 20.0, 20.0), grid, terms, out);
+  compare("log16", viscoroll::LogarithmicCrown<double>(1.0, 16.0, 0.2), grid, terms, out);
+}
