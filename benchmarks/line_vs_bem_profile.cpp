@@ -6,7 +6,9 @@
 // long-term static a(0). Prints the table of docs/validation.md ("Rolling rollers of any
 // profile"): d, chi, a(0), b(0), the contact's end y+, F0(0) and the edge peak f0_max/F0(0) of
 // both, the largest difference of F0(y) over the BEM's rows in units of its peak, and the line
-// solve's wall time; with an output directory, the F0(y) of both for the figure.
+// solve's wall time; with an output directory, the F0(y) of both at the BEM's rows,
+// out_dir/<roller>_v<V tau/a0>.csv (columns y, f0_bem, f0_line), which
+// benchmarks/line_vs_bem_profile.gp draws as docs/figures/line_vs_bem_profile.png.
 //   line_vs_bem_profile [grid [terms [out_dir]]]   (defaults 24, 8)
 #include <algorithm>
 #include <chrono>
@@ -61,7 +63,9 @@ void compare(const char* name, const Profile& roller, int grid, int terms, const
                 la.f0_max / line_centre, 100 * worst / along.f0_max, seconds,
                 s.converged && e.converged ? "" : " NOT CONVERGED", s.root ? "" : " (minimum)");
     if (!out.empty()) {
-      std::ofstream csv(out + "/" + name + "_v" + std::to_string(v) + ".csv");
+      char file[64];
+      std::snprintf(file, sizeof file, "/%s_v%g.csv", name, v);
+      std::ofstream csv(out + file);
       csv << "y,f0_bem,f0_line\n";
       for (std::size_t i = 0; i < along.y.size(); ++i)
         csv << along.y[i] << ',' << along.f0[i] << ',' << line_f0(along.y[i]) << '\n';

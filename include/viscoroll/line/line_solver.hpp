@@ -195,7 +195,9 @@ class LineSolver {
                               slow_c.d);
       sol.converged = false;
       sol.root = false;
-      sol.reason = "the long-term static contact of the profile: " + slow_c.reason;
+      sol.reason = "the long-term static contact of the profile: " + slow_c.reason +
+                   " (the line theory needs a slender contact, its collocation points a half "
+                   "width apart, docs/theory.md (G5); a short contact is the BEM's)";
       sol.warnings = slow_c.warnings;
       return sol;
     }
