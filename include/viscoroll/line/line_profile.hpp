@@ -52,11 +52,13 @@ class ProfileDrop {
   using Real = typename Profile::real_type;
   ProfileDrop(Profile profile, int length, int curvature)
       : profile_(std::move(profile)), length_(length), curvature_(curvature) {}
-  Real drop(const LineProblem<Real>&, Real y) const {
+  template <class Problem>
+  Real drop(const Problem&, Real y) const {
     return times_power_of_two(profile_.drop(times_power_of_two(y, length_)),
                               -(curvature_ + 2 * length_));
   }
-  Real drop_slope(const LineProblem<Real>&, Real y) const {
+  template <class Problem>
+  Real drop_slope(const Problem&, Real y) const {
     return times_power_of_two(profile_.drop_slope(times_power_of_two(y, length_)),
                               -(curvature_ + length_));
   }

@@ -71,23 +71,24 @@ struct ExteriorLeadingEdge {
   }
 };
 
-/// The roller's drop h(y) along its axis in (34), a policy of LineResidual: a D provides
-/// `Real drop(const LineProblem<Real>&, Real y) const` and `Real drop_slope(const
-/// LineProblem<Real>&, Real y) const`, h(y) and h'(y) in the residual's units for |y| < l, h even
-/// in y (the residual collocates on y > 0). Models: ParabolicDrop (the paper's Eq. 27, from
-/// LineProblem::c2) and ProfileDrop (line_profile.hpp, a symmetric RollerProfile).
-template <class D, class Real>
-concept RollerDrop = requires(const D& d, const LineProblem<Real>& p, Real y) {
+/// The roller's drop h(y) along its axis in (34), a policy of the line residuals (LineResidual,
+/// LineSpectrumResidual): a D provides `Real drop(const Problem&, Real y) const` and
+/// `Real drop_slope(const Problem&, Real y) const`, h(y) and h'(y) in the residual's units for
+/// |y| < l, h even in y (the residuals collocate on y > 0); Problem the residual's constants
+/// (LineProblem, LineSpectrumProblem). Models: ParabolicDrop (the paper's Eq. 27, from the
+/// problem's c2) and ProfileDrop (line_profile.hpp, a symmetric RollerProfile).
+template <class D, class Real, class Problem = LineProblem<Real>>
+concept RollerDrop = requires(const D& d, const Problem& p, Real y) {
   { d.drop(p, y) } -> std::convertible_to<Real>;
   { d.drop_slope(p, y) } -> std::convertible_to<Real>;
 };
 
-/// The paper's drop h = C2 y^2/2 (Eq. 27), C2 = LineProblem::c2.
+/// The paper's drop h = C2 y^2/2 (Eq. 27), C2 = the problem's c2.
 struct ParabolicDrop {
-  template <class Real>
-  Real drop(const LineProblem<Real>& p, Real y) const { return p.c2 * y * y / 2; }
-  template <class Real>
-  Real drop_slope(const LineProblem<Real>& p, Real y) const { return p.c2 * y; }
+  template <class Problem, class Real>
+  Real drop(const Problem& p, Real y) const { return p.c2 * y * y / 2; }
+  template <class Problem, class Real>
+  Real drop_slope(const Problem& p, Real y) const { return p.c2 * y; }
 };
 
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,

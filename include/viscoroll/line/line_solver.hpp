@@ -160,8 +160,8 @@ class LineSolver {
   Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const;
 
   /// Solves the rolling line contact of a symmetric roller profile (roller/profile.hpp: a crowned
-  /// cylinder, a logarithmic crown, a symmetric table, the ellipsoid) on a material with one
-  /// memory term: (34) with the profile's drop h(y) (docs/theory.md section 16, (RP1)), every
+  /// cylinder, a logarithmic crown, a symmetric table, the ellipsoid): (34) with the profile's
+  /// drop h(y) (docs/theory.md section 16, (RP1); for a spectrum, (RP5) with section 14), every
   /// other equation as for the ellipsoid. The long-term and the glassy contact are the static
   /// profile contact (static_profile_contact.hpp) of the long-term and of the instantaneous
   /// compliance, expanded in the solver's representation; `a_long_term`, `l_long_term`,
@@ -170,7 +170,10 @@ class LineSolver {
   /// a static contact that does not converge, is returned not converged with the reason.
   template <RollerProfile Profile>
   Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
-      requires SingleTimeModel<Material> && std::same_as<typename Profile::real_type, Real> {
+      requires std::same_as<typename Profile::real_type, Real> {
+    if constexpr (!SingleTimeModel<Material>) {
+      return solve_spectrum(scene, start);
+    } else {
     scene.validate();
     const Profile& roller = scene.roller;
     const Real c = material_.instantaneous_compliance();
@@ -186,31 +189,12 @@ class LineSolver {
     detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
     const StaticProfileContact<Real> slow_c =
         static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
-    const auto k1 = binary<Real>(c1);
-    if (!slow_c.converged) {
-      Solution sol = solution(Units{c1, Real(0), 0, 0},
-                              StaticLineContact<Real>{slow_c.a_ref, slow_c.half_length(), slow_c.d},
-                              c, f, Real(0),
-                              LineShape<Real>{slow_c.a_ref, slow_c.half_length(), {Real(0)}, {Real(0)}},
-                              slow_c.d);
-      sol.converged = false;
-      sol.root = false;
-      sol.reason = "the long-term static contact of the profile: " + slow_c.reason +
-                   " (the line theory needs a slender contact, its collocation points a half "
-                   "width apart, docs/theory.md (G5); a short contact is the BEM's)";
-      sol.warnings = slow_c.warnings;
-      return sol;
-    }
-    // Units: curvature C1's power of two, length a power of two near the long-term a(0).
+    if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
     const Real a0_caller = slow_c.a(slow_c.centre());
-    const Units u{k1.m, Real(0), k1.e, binary<Real>(a0_caller).e};
+    const Units u = profile_units(c1, a0_caller);
     const int d_unit = u.curvature + 2 * u.length;
     const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
-      LineShape<Real> shape = profile_line_shape(s, a0_caller, 2 * profile_static_terms, b_over);
-      shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
-      shape.l = times_power_of_two(shape.l, -u.length);
-      return std::pair<LineShape<Real>, Real>{std::move(shape),
-                                              times_power_of_two(s.d, -d_unit)};
+      return profile_in_units(s, u, a0_caller, b_over);
     };
     const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
     const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
@@ -254,16 +238,9 @@ class LineSolver {
       return static_solution(long_term, f,
                              "static (static profile contact)");
     }();
-    // A contact that reaches the roller's body end is outside the line theory (issue: a sharp
-    // end's pressure peak), reported, not returned as a plausible number.
-    const Real l_caller = times_power_of_two(sol.shape.l, u.length);
-    if (sol.converged && !(l_caller < roller.y_max() && -l_caller > roller.y_min())) {
-      sol.converged = false;
-      sol.reason = "the contact reaches the roller's body end (l = " + detail::format_value(l_caller) +
-                   ", the body ends at y = " + detail::format_value(roller.y_max()) +
-                   "): outside the line theory";
-    }
+    check_body_end(sol, roller, u);
     return in_caller_units(std::move(sol), u, c1, inputs);
+    }
   }
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
@@ -339,6 +316,61 @@ class LineSolver {
   /// The coefficients of the static profile contacts behind a profile's solve (its default,
   /// docs/theory.md (G5)); their shapes are expanded in twice as many for the line solver.
   static constexpr int profile_static_terms = 12;
+
+  /// A profile's units: curvature C1's power of two, length a power of two near the long-term
+  /// a(0) (a0_caller, in the caller's units).
+  static Units profile_units(Real c1, Real a0_caller) {
+    const auto k1 = binary<Real>(c1);
+    return Units{k1.m, Real(0), k1.e, binary<Real>(a0_caller).e};
+  }
+  /// A static profile contact as the solver's shape (unit a_ref given in the caller's units,
+  /// b = b_over a_ref) and penetration, in the units u.
+  static std::pair<LineShape<Real>, Real> profile_in_units(const StaticProfileContact<Real>& s,
+                                                           const Units& u, Real a_ref, Real b_over) {
+    LineShape<Real> shape = profile_line_shape(s, a_ref, 2 * profile_static_terms, b_over);
+    shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
+    shape.l = times_power_of_two(shape.l, -u.length);
+    return {std::move(shape), times_power_of_two(s.d, -(u.curvature + 2 * u.length))};
+  }
+  /// The solve of a profile whose long-term static contact did not converge: not converged, its
+  /// reason, in the caller's units.
+  static Solution profile_static_failure(const StaticProfileContact<Real>& slow_c, Real c, Real f) {
+    Solution sol{};
+    sol.shape = LineShape<Real>{slow_c.a_ref, slow_c.half_length(), {Real(0)}, {Real(0)}};
+    sol.d = slow_c.d;
+    sol.a_long_term = slow_c.a_ref;
+    sol.l_long_term = slow_c.half_length();
+    sol.d_long_term = slow_c.d;
+    sol.chi = Real(0);
+    sol.converged = false;
+    sol.root = false;
+    sol.iterations = 0;
+    sol.residual = std::numeric_limits<Real>::quiet_NaN();
+    sol.c1 = slow_c.c1;
+    if constexpr (SingleTimeModel<Material>) {
+      sol.vtau = Real(0);
+      sol.f = f;
+      sol.compliance = c;
+    }
+    sol.reason = "the long-term static contact of the profile: " + slow_c.reason +
+                 " (the line theory needs a slender contact, its collocation points a half "
+                 "width apart, docs/theory.md (G5); a short contact is the BEM's)";
+    sol.warnings = slow_c.warnings;
+    return sol;
+  }
+  /// A contact that reaches the roller's body end is outside the line theory (a sharp end's
+  /// pressure peak): reported, not returned as a plausible number. l in the units u.
+  template <class Profile>
+  static void check_body_end(Solution& sol, const Profile& roller, const Units& u) {
+    const Real l_caller = times_power_of_two(sol.shape.l, u.length);
+    if (sol.converged && !(l_caller < roller.y_max() && -l_caller > roller.y_min())) {
+      sol.converged = false;
+      sol.root = false;
+      sol.reason = "the contact reaches the roller's body end (l = " +
+                   detail::format_value(l_caller) + ", the body ends at y = " +
+                   detail::format_value(roller.y_max()) + "): outside the line theory";
+    }
+  }
 
   /// Terms of the continuation stages that lead to `terms`: 2, 4, 8, 16, 32 below
   /// it, then `terms` itself (docs/line-solver.md, "Continuation in N").
@@ -709,12 +741,16 @@ class LineSolver {
   /// scene's speed as the plane solver does (relaxed ones, V tau_k <= eps a0, folded into the
   /// compliance; not started ones, strip_is_glassy, dropped); none active: the static closed
   /// form of the remaining compliance; one: the standard linear solid (the paper's theory, the
-  /// same digits as LineSolver over that material); two or more: LineSpectrumResidual.
-  Solution solve_spectrum(const LineScene<Real>& scene, const Solution* start) const
+  /// same digits as LineSolver over that material); two or more: LineSpectrumResidual. Scene: a
+  /// LineScene (the paper's ellipsoid) or a LineProfileScene (a symmetric roller profile, whose
+  /// static contacts are static_profile_contact's and whose drop enters (34), (RP5)).
+  template <class Scene>
+  Solution solve_spectrum(const Scene& scene, const Solution* start) const
       requires(!SingleTimeModel<Material>) {
     using std::cbrt;
     using std::log;
     using std::pow;
+    constexpr bool ellipsoid = std::same_as<Scene, LineScene<Real>>;
     scene.validate();
     detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1,
                     "basis", int(options_.basis),
@@ -724,8 +760,15 @@ class LineSolver {
     const auto& terms = material_.memory_terms();
     Real creep_ratio = 0;
     for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
+    const Real c1 = [&] {
+      if constexpr (ellipsoid) return scene.c1;
+      else return Real(scene.roller.c1());
+    }();
     const auto inputs = [&] {
-      return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
+      std::string roller;
+      if constexpr (ellipsoid) roller = ", c2 = " + detail::format_value(scene.c2);
+      else roller = " (a roller profile)";
+      return "c1 = " + detail::format_value(c1) + roller +
              ", load = " + detail::format_value(scene.load) +
              ", speed = " + detail::format_value(scene.speed) +
              ", compliance = " + detail::format_value(c) +
@@ -733,15 +776,28 @@ class LineSolver {
              ", terms = " + std::to_string(terms.size());
     };
     detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-    const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
-    const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
-    detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
-    const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
     // The long-term static contact, compliance c (1 + F): the unit of length.
-    const auto slow_units = static_line_contact_in_units<Real>(
-        k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
-    const Units u{k1.m, c2, k1.e, slow_units.length};
-    const StaticLineContact<Real> slow = slow_units.contact;
+    Units u;
+    StaticLineContact<Real> slow;
+    std::optional<StaticProfileContact<Real>> slow_profile;  // a profile's, in the caller's units
+    if constexpr (ellipsoid) {
+      const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
+      const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
+      detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
+      const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
+      const auto slow_units = static_line_contact_in_units<Real>(
+          k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
+      u = Units{k1.m, c2, k1.e, slow_units.length};
+      slow = slow_units.contact;
+    } else {
+      slow_profile = static_profile_contact(scene.roller, (1 + creep_ratio) * c * scene.load,
+                                            profile_static_terms);
+      if (!slow_profile->converged) return profile_static_failure(*slow_profile, c, Real(0));
+      const Real a0_caller = slow_profile->a(slow_profile->centre());
+      u = profile_units(c1, a0_caller);
+      const auto in_units = profile_in_units(*slow_profile, u, a0_caller, Real(0));
+      slow = {in_units.first.a_ref, in_units.first.l, in_units.second};
+    }
     // Classify the terms (lengths in units). Relaxed: V tau_k <= sqrt(eps) a0 moves a, b and
     // chi/C1 by O(V tau_k) <= sqrt(eps) a0 (P6), below the line theory's own error, and keeps the
     // strips out of the slow regime of the line equations (docs/line-solver.md), where they have
@@ -753,7 +809,7 @@ class LineSolver {
     const auto merged = detail::merge_spectrum(std::move(active));
     const Real c_eff = c * (1 + relaxed);
     Solution sol{};
-    sol.c1 = scene.c1;
+    sol.c1 = c1;
     sol.active_terms = static_cast<int>(merged.size());
     if (merged.size() <= 1) {
       // The standard linear solid (or the elastic solid) of the remaining compliance: its own
@@ -784,10 +840,16 @@ class LineSolver {
       sol.iterations = one.iterations;
       sol.residual = one.residual;
       sol.warnings = one.warnings;
-      const auto full = static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
-      sol.a_long_term = full.a0;
-      sol.l_long_term = full.l;
-      sol.d_long_term = full.d;
+      if constexpr (ellipsoid) {
+        const auto full = static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
+        sol.a_long_term = full.a0;
+        sol.l_long_term = full.l;
+        sol.d_long_term = full.d;
+      } else {
+        sol.a_long_term = slow_profile->a(slow_profile->centre());
+        sol.l_long_term = slow_profile->half_length();
+        sol.d_long_term = slow_profile->d;
+      }
       if (!merged.empty()) sol.single = std::move(one);
       return sol;
     }
@@ -800,11 +862,23 @@ class LineSolver {
              merged, detail::SpectrumDirection::creep_to_relaxation, Real(1), Real(1)))
       lengths.relaxation.push_back(t.q);
     // The static contact of the terms solved for, c_eff (1 + F'), in the same units: lengths
-    // scale as the cube root of the compliance (Eq. 47 with (48)), d as its square.
+    // scale as the cube root of the compliance (Eq. 47 with (48)), d as its square; a profile's
+    // is solved for (static_profile_contact, its a(0) in the caller's units eff_a0).
     const Real s = cbrt((1 + relaxed) * (1 + lengths.creep_ratio) / (1 + creep_ratio));
-    const StaticLineContact<Real> eff{slow.a0 * s, slow.l * s, slow.d * s * s};
-    const LineSpectrumProblem<Real> prob{u.c1, u.c2, lengths, eff.a0, eff.l,
-                                         u.c1 * eff.a0 * eff.a0 * eff.l / 3};
+    StaticLineContact<Real> eff{slow.a0 * s, slow.l * s, slow.d * s * s};
+    Real load_target = u.c1 * eff.a0 * eff.a0 * eff.l / 3;
+    const Real eff_load = c_eff * (1 + lengths.creep_ratio) * scene.load;  // (1 + F') c_eff P
+    Real eff_a0 = 0;
+    std::optional<StaticProfileContact<Real>> eff_profile;
+    if constexpr (!ellipsoid) {
+      eff_profile = static_profile_contact(scene.roller, eff_load, profile_static_terms);
+      if (!eff_profile->converged) return profile_static_failure(*eff_profile, c, Real(0));
+      eff_a0 = eff_profile->a(eff_profile->centre());
+      const auto in_units = profile_in_units(*eff_profile, u, eff_a0, Real(0));
+      eff = {in_units.first.a_ref, in_units.first.l, in_units.second};
+      load_target = times_power_of_two(eff_load, -(u.curvature + 3 * u.length));
+    }
+    const LineSpectrumProblem<Real> prob{u.c1, u.c2, lengths, eff.a0, eff.l, load_target};
     // The cold start: the plane strip of the spectrum at the load whose long-term width is a0
     // ((S8), TOMS 748 as the plane solver), shrunk as the 3-D widths, (1 + F)^(-1/3).
     LineShape<Real> shape;
@@ -833,20 +907,34 @@ class LineSolver {
         A = (bracket.first + bracket.second) / 2;
       }
       const auto ps = spectrum_strip(A * eff.a0, lengths);
-      const Real ratio = pow(A, Real(2) / 3);
-      shape = LineShape<Real>{eff.a0, eff.l * ratio, {log(ratio)}, {ps.b / eff.a0}};
       moments = {{ps.g0 / (A * A * eff.a0 * eff.a0)}, {ps.centroid / eff.a0}};
-      d = eff.d * ratio * ratio;
+      if constexpr (ellipsoid) {
+        const Real ratio = pow(A, Real(2) / 3);
+        shape = LineShape<Real>{eff.a0, eff.l * ratio, {log(ratio)}, {ps.b / eff.a0}};
+        d = eff.d * ratio * ratio;
+      } else {
+        // (RP8): the static contact at the compliance load whose (48) is A^(2/3) times eff's.
+        const auto seed = static_profile_contact(scene.roller, eff_load * A * A, profile_static_terms);
+        std::tie(shape, d) =
+            profile_in_units(seed.converged ? seed : *eff_profile, u, eff_a0, ps.b / eff.a0);
+      }
     }
     const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
     int iterations = 0;
     Vector r;
     numerics::LeastSquaresOutcome out;
-    std::optional<LineSpectrumResidual<Real, Quadrature>> last;
+    const auto drop = [&] {
+      if constexpr (ellipsoid)
+        return ParabolicDrop{};
+      else
+        return ProfileDrop<std::remove_cvref_t<decltype(scene.roller)>>(scene.roller, u.length,
+                                                                        u.curvature);
+    }();
+    std::optional<LineSpectrumResidual<Real, Quadrature, std::remove_const_t<decltype(drop)>>> last;
     const bool least_squares = minimises();
     const std::vector<int> stages = continuation_stages(options_.terms);
     for (const int n : stages) {
-      last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance));
+      last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop);
       Vector x = last->pack(shape, moments, d);
       r.resize(last->equations());
       if (!(*last)(x, r)) {
@@ -887,6 +975,7 @@ class LineSolver {
       sol.root = false;
       sol.reason = "a root of the line equations that is not a contact (d, a(0) or l not positive)";
     }
+    if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
     if (sol.converged && !sol.root) sol.warnings.push_back(minimum_warning(rmax));
     for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
       sol.warnings.push_back(std::move(w));

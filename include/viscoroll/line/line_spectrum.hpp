@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
@@ -26,6 +27,7 @@
 #include <viscoroll/line/detail/spectrum_memory.hpp>
 #include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_operators.hpp>
+#include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
 #include <optional>
@@ -57,8 +59,11 @@ struct LineSpectrumMoments {
 /// kappa_0..kappa_N, ln(l / l_ref), d / (C1 a_ref^2). Equations (4N + 5): at each point (34) with
 /// (S13), b, G0/a^2 and the centroid of the strip (S12) minus the expanded ones, then the load.
 /// A least-squares problem for numerics::levenberg_marquardt, with a semi-analytic Jacobian.
-template <RealScalar Real, class Quadrature>
-requires NodalQuadratureRule<Quadrature, Real>
+/// `Drop`: the roller's h(y) in (34) (a RollerDrop, line_residual.hpp; the paper's C2 y^2/2 by
+/// default).
+template <RealScalar Real, class Quadrature, class Drop = ParabolicDrop>
+requires NodalQuadratureRule<Quadrature, Real> &&
+    RollerDrop<Drop, Real, LineSpectrumProblem<Real>>
 class LineSpectrumResidual {
  public:
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
@@ -68,8 +73,9 @@ class LineSpectrumResidual {
   /// mu_1/a_ref resolves the end layers where a(y) falls to the relaxation lengths).
   /// tolerance: the relative accuracy of every integral (LineNodeRule; 0: the scalar's epsilon).
   LineSpectrumResidual(LineSpectrumProblem<Real> problem, int terms,
-                       LineBasis basis = LineBasis::t_squared, Real tolerance = Real(0))
-      : p_(std::move(problem)), n_(terms), basis_(basis) {
+                       LineBasis basis = LineBasis::t_squared, Real tolerance = Real(0),
+                       Drop drop = Drop{})
+      : p_(std::move(problem)), drop_(std::move(drop)), n_(terms), basis_(basis) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     using std::cos;
     using std::sqrt;
@@ -317,7 +323,7 @@ class LineSpectrumResidual {
       // (34) with (S13): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2] = -C1 a^2/4 - C1 (Pi_g'(0) + e2)
       //   - C1 b (b - 2 Lambda_1)/2 - C2 y^2/2 + d, with the strip's b.
       const Real rhs34 =
-          -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 - p_.c2 * y * y / 2 + d;
+          -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 - drop_.drop(p_, y) + d;
       r[i] = (lhs34 - rhs34) / (c1 * ar * ar);
       r[m + i] = (st.b - here.b) / ar;
       r[2 * m + i] = st.g0 / (a * a) - here.gamma;
@@ -345,11 +351,11 @@ class LineSpectrumResidual {
       add_series_row(J, i, ti.data(), 2 * here.f0 * (logs - fsum / s34) - 2 * here.f0, 0,
                      c1 * a * a / 2 * (logs - fsum / s34), 0, s34);
       J(i, il) += 2 * here.f0 * s34;
-      // -rhs34: C1 a^2/4 + C1 pig1 + C1 (b - Lambda_1) db + C2 y^2 d ln l - d.
+      // -rhs34: C1 a^2/4 + C1 pig1 + C1 (b - Lambda_1) db + h'(y) y d ln l - d.
       add_series_row(J, i, ti.data(), c1 * a * a / 2, 0, 0, 0, s34);
       strip_row(ss.pig1, ss.pig1_a, c1 * s34, i);
       strip_row(ss.b, ss.b_a, c1 * (b - lambda_sum_) * s34, i);
-      J(i, il) += p_.c2 * y * y * s34;
+      J(i, il) += drop_.drop_slope(p_, y) * y * s34;
       J(i, id) -= 1;
       // b, G0/a^2 and the centroid against the expansions.
       strip_row(ss.b, ss.b_a, 1 / ar, m + i);
@@ -381,6 +387,7 @@ class LineSpectrumResidual {
   }
 
   LineSpectrumProblem<Real> p_;
+  Drop drop_;
   int n_;
   LineBasis basis_;
   Real scale_ = 0;
