@@ -3,10 +3,12 @@
 // rollers": C1 = 1, crown radius 20, flat part 0, 10, 20; a logarithmic crown of length 16), on a
 // standard linear solid (f = 2, tau = 1) under the long-term compliance load (1 + f) c P = 0.3,
 // at V tau/a0 = 0 (the long-term static limit), 0.1, 1, 10 and the glassy limit (10^4), a0 the
-// long-term static a(0). Prints the table of docs/validation.md ("Rolling rollers of any
-// profile"): d, chi, a(0), b(0), the contact's end y+, F0(0) and the edge peak f0_max/F0(0) of
-// both, the largest difference of F0(y) over the BEM's rows in units of its peak, and the line
-// solve's wall time; with an output directory, the F0(y) of both at the BEM's rows,
+// long-term static a(0); then the flat part 10 on the two- and the twenty-term spectra of the
+// spectrum validation (sum of f = 9, under (1 + F) c P = 0.3) at V = 0.01 ... 100. Prints the
+// tables of docs/validation.md ("Rolling rollers of any profile"): d, chi, a(0), b(0), the
+// contact's end y+, F0(0) and the edge peak f0_max/F0(0) of both, the largest difference of F0(y)
+// over the BEM's rows in units of its peak, and the line solve's wall time; with an output
+// directory, the F0(y) of both at the BEM's rows (standard linear solid),
 // out_dir/<roller>_v<V tau/a0>.csv (columns y, f0_bem, f0_line), which
 // benchmarks/line_vs_bem_profile.gp draws as docs/figures/line_vs_bem_profile.png.
 //   line_vs_bem_profile [grid [terms [out_dir]]]   (defaults 24, 8)
@@ -20,19 +22,32 @@
 #include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/material/prony.hpp>
+#include <vector>
 
 namespace {
 
-using Material = viscoroll::StandardLinearSolid<double>;
+/// The line's F0/((1 + F) c) at y, as along_roller (the standard linear solid's solution) or from
+/// f0(y) and the compliance of the terms solved for (a spectrum's).
+double load_per_length(const viscoroll::LineSolverD::Solution& s, double, double y) {
+  return std::abs(y) < s.shape.l ? s.functions(y).f0 / (s.compliance * (1 + s.f)) : 0.0;
+}
+template <class Solution>
+double load_per_length(const Solution& s, double long_term_compliance, double y) {
+  return std::abs(y) < s.shape.l ? s.f0(y) / long_term_compliance : 0.0;
+}
 
-template <class Profile>
-void compare(const char* name, const Profile& roller, int grid, int terms, const std::string& out) {
-  const Material m(1.0, 0.5, 2.0, 1.0);
-  const double c = m.instantaneous_compliance(), load = 0.3 / (3 * c);
+/// Speeds in units of a0/tau (a0 the long-term static a(0)) for the standard linear solid, of the
+/// speed itself for a spectrum (tau_k from 1e-3 to 1e3).
+template <class Material, class Profile>
+void compare(const char* name, const Material& m, double creep_ratio, const Profile& roller,
+             const std::vector<double>& speeds, bool in_a0, int grid, int terms,
+             const std::string& out) {
+  const double c = m.instantaneous_compliance(), load = 0.3 / ((1 + creep_ratio) * c);
   const viscoroll::LineSolver<double, Material> line(m, viscoroll::LineOptions{.terms = terms});
   const auto still = line.solve(viscoroll::LineProfileScene<Profile>{roller, load, 0.0});
-  const double a0 = still.shape.a(0.0);
-  for (const double v : {0.0, 0.1, 1.0, 10.0, 1e4}) {
+  const double a0 = in_a0 ? still.shape.a(0.0) : 1.0;
+  for (const double v : speeds) {
     const auto start = std::chrono::steady_clock::now();
     const auto s = line.solve(viscoroll::LineProfileScene<Profile>{roller, load, v * a0});
     const double seconds =
@@ -41,10 +56,9 @@ void compare(const char* name, const Profile& roller, int grid, int terms, const
     options.grid = grid;
     const auto e = viscoroll::BemSolver(m, options).solve(viscoroll::bem_scene(roller, m, load, v * a0));
     const auto along = e.along_roller();
-    // The line's load per length at the BEM's rows (F0/((1 + f) c), as along_roller).
-    const auto line_f0 = [&](double y) {
-      return std::abs(y) < s.shape.l ? s.functions(y).f0 / (s.compliance * (1 + s.f)) : 0.0;
-    };
+    // The line's load per length at the BEM's rows. A spectrum's F0 carries the compliance of
+    // the terms solved for: at these speeds every term is active or none (static), so (1 + F) c.
+    const auto line_f0 = [&](double y) { return load_per_length(s, (1 + creep_ratio) * c, y); };
     double worst = 0, centre_row = 0, bem_a0 = 0, bem_b0 = 0;
     for (std::size_t i = 0; i < along.y.size(); ++i) {
       worst = std::max(worst, std::abs(line_f0(along.y[i]) - along.f0[i]));
@@ -54,13 +68,14 @@ void compare(const char* name, const Profile& roller, int grid, int terms, const
         bem_b0 = along.b[i];
       }
     }
-    const auto la = s.along_roller(801);
+    double line_peak = 0;
+    for (int k = 1; k < 800; ++k) line_peak = std::max(line_peak, line_f0(s.shape.l * (k / 400.0 - 1)));
     const double line_centre = line_f0(0.0);
     std::printf("| %s | %g | %.5f / %.5f | %.5f / %.5f | %.4f / %.4f | %.4f / %.4f | %.3f / %.3f | "
                 "%.5f / %.5f | %.3f / %.3f | %.1f%% | %.3f |%s%s\n",
                 name, v, e.d, s.d, e.chi, s.chi, bem_a0, s.shape.a(0.0), bem_b0, s.shape.b(0.0),
                 along.y_plus, s.shape.l, centre_row, line_centre, along.f0_max / centre_row,
-                la.f0_max / line_centre, 100 * worst / along.f0_max, seconds,
+                line_peak / line_centre, 100 * worst / along.f0_max, seconds,
                 s.converged && e.converged ? "" : " NOT CONVERGED", s.root ? "" : " (minimum)");
     if (!out.empty()) {
       char file[64];
@@ -81,8 +96,22 @@ int main(int argc, char** argv) {
   const std::string out = argc > 3 ? argv[3] : "";
   std::printf("| roller | V tau/a0 | d: BEM / line | chi: BEM / line | a(0) | b(0) | y+ | F0(0) | "
               "f0_max/F0(0) | max dF0 | line s |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  compare("barrel", viscoroll::CrownedCylinder<double>(1.0, 0.0, 20.0), grid, terms, out);
-  compare("flat10", viscoroll::CrownedCylinder<double>(1.0, 10.0, 20.0), grid, terms, out);
-  compare("flat20", viscoroll::CrownedCylinder<double>(1.0, 20.0, 20.0), grid, terms, out);
-  compare("log16", viscoroll::LogarithmicCrown<double>(1.0, 16.0, 0.2), grid, terms, out);
+  const viscoroll::StandardLinearSolid<double> sls(1.0, 0.5, 2.0, 1.0);
+  const std::vector<double> in_a0{0.0, 0.1, 1.0, 10.0, 1e4};
+  const viscoroll::CrownedCylinder<double> flat10(1.0, 10.0, 20.0);
+  compare("barrel", sls, 2.0, viscoroll::CrownedCylinder<double>(1.0, 0.0, 20.0), in_a0, true,
+          grid, terms, out);
+  compare("flat10", sls, 2.0, flat10, in_a0, true, grid, terms, out);
+  compare("flat20", sls, 2.0, viscoroll::CrownedCylinder<double>(1.0, 20.0, 20.0), in_a0, true,
+          grid, terms, out);
+  compare("log16", sls, 2.0, viscoroll::LogarithmicCrown<double>(1.0, 16.0, 0.2), in_a0, true,
+          grid, terms, out);
+  std::vector<viscoroll::PronyTerm<double>> twenty;
+  for (int k = 0; k < 20; ++k) twenty.push_back({0.45, std::pow(10.0, -3 + 6.0 * k / 19)});
+  const std::vector<double> speeds{0.01, 0.1, 1.0, 10.0, 100.0};
+  std::printf("\nSpectra (V = V tau_1/a0 scale: speeds in units of 1/tau's unit), flat part 10:\n\n");
+  compare("two terms", viscoroll::PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}}), 9.0,
+          flat10, speeds, false, grid, terms, "");
+  compare("twenty terms", viscoroll::PronyCreep<double>(1.0, 0.5, twenty), 9.0, flat10, speeds,
+          false, grid, terms, "");
 }
