@@ -6,22 +6,31 @@
 
 namespace viscoroll::cli {
 
+/// The stations of LineSolution::along_roller behind the record's f0_max, f0_max_y and the rows
+/// of --profile-out: 65 evenly spaced inside (-l, l), y = 0 among them.
+inline constexpr int line_profile_stations = 65;
+
 /// The fields of a line solution `s` (LineSolution or LineSpectrumSolution) after the record's
-/// head (method, the material's keys, speed): the contact's shape up to chi, then `middle` (the
-/// peak pressure pmax, pmax_x; a spectrum's active_terms), then the iteration's fields. `Record`
-/// is a sequence of (key, value) fields built from braces.
+/// head (method, the material's keys, speed): the contact's shape up to chi (with a LineSolution,
+/// of the ellipsoid or of a roller profile, the peak of the load per unit length along the
+/// roller, f0_max at f0_max_y, from along_roller(line_profile_stations), as the bem's record),
+/// then `middle` (the peak pressure pmax, pmax_x; a spectrum's active_terms), then the
+/// iteration's fields. `Record` is a sequence of (key, value) fields built from braces.
 template <class Record, class Solution>
 Record line_fields(const Solution& s, const Record& middle, int terms, double seconds) {
-  Record out = {{"a0", s.a(0.0)},
-                {"b0", s.b(0.0)},
-                {"l", s.l()},
-                {"y_minus", -s.l()},
-                {"y_plus", s.l()},
-                {"d", s.d},
-                {"a_long_term", s.a_long_term},
-                {"l0", s.l_long_term},
-                {"d0", s.d_long_term},
-                {"chi", s.chi}};
+  Record out = {{"a0", s.a(0.0)}, {"b0", s.b(0.0)}, {"l", s.l()}, {"y_minus", -s.l()},
+                {"y_plus", s.l()}};
+  if constexpr (requires { s.along_roller(line_profile_stations); }) {
+    const auto along = s.along_roller(line_profile_stations);
+    const Record peak = {{"f0_max", along.f0_max}, {"f0_max_y", along.f0_max_y}};
+    out.insert(out.end(), peak.begin(), peak.end());
+  }
+  const Record shape = {{"d", s.d},
+                        {"a_long_term", s.a_long_term},
+                        {"l0", s.l_long_term},
+                        {"d0", s.d_long_term},
+                        {"chi", s.chi}};
+  out.insert(out.end(), shape.begin(), shape.end());
   out.insert(out.end(), middle.begin(), middle.end());
   const Record tail = {{"seconds", seconds},
                        {"converged", s.converged},
