@@ -54,6 +54,7 @@
 #include <viscoroll/sweep.hpp>
 
 #include "cli/line_record.hpp"
+#include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
 
@@ -584,16 +585,9 @@ Problem from_scene(const SolveOptions& o) {
           // The library validates what the reader has not (a table's spline); its message names
           // the parameter, here under the scene's key.
           try {
-            if constexpr (std::is_same_v<R, viscoroll::cli::CrownedProfile>)
-              p.roller = Tilted(viscoroll::CrownedCylinder<double>(r.radius, r.flat_length,
-                                                                   r.crown_radius, r.length),
-                                r.tilt);
-            else if constexpr (std::is_same_v<R, viscoroll::cli::LogarithmicProfile>)
-              p.roller = Tilted(
-                  viscoroll::LogarithmicCrown<double>(r.radius, r.length, r.scale, r.end_drop),
-                  r.tilt);
-            else
-              p.roller = Tilted(viscoroll::TabulatedProfile<double>(r.radius, r.y, r.h), r.tilt);
+            viscoroll::cli::visit_axial_profile(scene.roller, [&](auto profile, double tilt) {
+              p.roller = Tilted(std::move(profile), tilt);
+            });
           } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("viscoroll-solve: " + o.scene + ": roller: " + e.what());
           }
