@@ -438,7 +438,7 @@ struct Problem {
   std::vector<double> speeds;
   std::optional<long> grid;
   unsigned threads = 0;  ///< of the speed sweep (0: every core)
-  /// A prony material (bem only) at its reference temperature, its shift law, and the
+  /// A prony material at its reference temperature, its shift law, and the
   /// temperatures to solve at (degrees Celsius; one NaN without a shift law).
   std::optional<viscoroll::PronyRelaxation<double>> prony;
   std::optional<viscoroll::ShiftLaw<double>> shift;
