@@ -116,18 +116,23 @@ TEST_CASE("cli line profile: the crowned roller solves, F0 along it integrates t
     // tests/line/line_along_roller.test.cpp), hence (130/66)^2 = 3.9 times that on 65: bound
     // 3.9e-3 (measured up to 3.7e-4 here).
     const double h = 2 * l / 66;
-    double sum = 0, peak = 0, centre = 0;
+    double sum = 0, peak = 0, peak_y = 0, centre = 0;
     for (std::size_t k = 0; k < along.size(); ++k) {
       CHECK(along[k][3] == Approx(l * (2.0 * double(k + 1) / 66 - 1)).epsilon(1e-14).margin(1e-17));
       sum += along[k][4];
-      peak = std::max(peak, along[k][4]);
+      if (along[k][4] > peak) {
+        peak = along[k][4];
+        peak_y = along[k][3];
+      }
       CHECK(along[k][5] > 0);
       CHECK(along[k][7] > 0);
     }
     centre = along[32][4];
     CHECK(along[32][3] == 0);
     CHECK(sum * h == Approx(scene.load).epsilon(3.9e-3));
+    // The record's peak (cli::line_f0_peak) is the rows' (LineSolution::along_roller), exactly.
     CHECK(line["f0_max"].get<double>() == peak);
+    CHECK(line["f0_max_y"].get<double>() == peak_y);
     // The crowns' edge peak: F0 largest just past the flat part's ends (|y| = 25 mm), about
     // 33 mm from the centre, above F0(0).
     const double at = std::abs(line["f0_max_y"].get<double>());
