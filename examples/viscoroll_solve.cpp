@@ -6,9 +6,12 @@
 // solved by viscoroll::sweep on --threads threads: in chunks of 16 in the given order, line and
 // bem continuing from the previous converged solution of the chunk (any thread count, same result).
 // --method plane: Hunter's plane problem (load per unit length, c2 ignored).
-// --method line: the line-contact solver (--grid N the Chebyshev terms, default 6); each line
-// also carries l, y_minus, y_plus, d, l0, d0 (the static long-term l and d), terms, reason and
-// warnings.
+// --method line: the line-contact solver (--grid N the Chebyshev terms, default 6) for the
+// ellipsoid or an untilted symmetric roller of finite length (crowned, logarithmic, table) on a
+// material of one relaxation time; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
+// (the peak of the load along the roller), d, l0, d0 (the static long-term l and d), terms,
+// reason and warnings. --profile-out writes the contact along the roller of each line or bem
+// solve.
 // --method bem: the 3-D boundary-element solver (--grid N elements per semi-axis of the static
 // long-term Hertz ellipse, default 16); each line carries a0 = a(0), b0 = b(0), l, y_minus,
 // y_plus, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason, iterations (active set),
@@ -51,6 +54,7 @@
 #include <viscoroll/sweep.hpp>
 
 #include "cli/line_record.hpp"
+#include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
 
@@ -242,8 +246,12 @@ class Output {
   /// Keeps a message for stderr (a warning, a solve that did not converge), printed by flush().
   void note(std::string message) { notes_.push_back(std::move(message)); }
 
-  /// Keeps the contact along the roller of a bem solve for --profile-out (one row per grid row
-  /// of the contact; tau or the temperature empty when not the sweep's variable).
+  /// --profile-out was given.
+  bool wants_profile() const { return profile_csv_.is_open(); }
+
+  /// Keeps the contact along the roller of a bem or line solve for --profile-out (one row per
+  /// station: the bem's grid rows of the contact, the line solver's line_profile_stations; tau or
+  /// the temperature empty when not the sweep's variable).
   void add_profile(double tau, double temperature, double speed,
                    const viscoroll::AlongRoller<double>& along) {
     if (!profile_csv_.is_open()) return;
@@ -430,7 +438,7 @@ struct Problem {
   std::vector<double> speeds;
   std::optional<long> grid;
   unsigned threads = 0;  ///< of the speed sweep (0: every core)
-  /// A prony material (bem only) at its reference temperature, its shift law, and the
+  /// A prony material at its reference temperature, its shift law, and the
   /// temperatures to solve at (degrees Celsius; one NaN without a shift law).
   std::optional<viscoroll::PronyRelaxation<double>> prony;
   std::optional<viscoroll::ShiftLaw<double>> shift;
@@ -438,7 +446,8 @@ struct Problem {
   /// The line method's settings (--oversampling, --basis, --max-iterations,
   /// --quadrature-tolerance): LineOptions.
   viscoroll::LineOptions line;
-  /// A roller of finite length from the scene file (bem only; docs/rollers.md), with its tilt.
+  /// A roller of finite length from the scene file (docs/rollers.md), with its tilt (0 with the
+  /// line method, which solves the profile itself).
   std::optional<std::variant<viscoroll::Tilted<viscoroll::CrownedCylinder<double>>,
                              viscoroll::Tilted<viscoroll::LogarithmicCrown<double>>,
                              viscoroll::Tilted<viscoroll::TabulatedProfile<double>>>>
@@ -576,16 +585,9 @@ Problem from_scene(const SolveOptions& o) {
           // The library validates what the reader has not (a table's spline); its message names
           // the parameter, here under the scene's key.
           try {
-            if constexpr (std::is_same_v<R, viscoroll::cli::CrownedProfile>)
-              p.roller = Tilted(viscoroll::CrownedCylinder<double>(r.radius, r.flat_length,
-                                                                   r.crown_radius, r.length),
-                                r.tilt);
-            else if constexpr (std::is_same_v<R, viscoroll::cli::LogarithmicProfile>)
-              p.roller = Tilted(
-                  viscoroll::LogarithmicCrown<double>(r.radius, r.length, r.scale, r.end_drop),
-                  r.tilt);
-            else
-              p.roller = Tilted(viscoroll::TabulatedProfile<double>(r.radius, r.y, r.h), r.tilt);
+            viscoroll::cli::visit_axial_profile(scene.roller, [&](auto profile, double tilt) {
+              p.roller = Tilted(std::move(profile), tilt);
+            });
           } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("viscoroll-solve: " + o.scene + ": roller: " + e.what());
           }
@@ -779,11 +781,45 @@ int line_terms(const Problem& p) {
 
 /// The line-contact (3-D) solver; for each tau the speeds are swept by viscoroll::sweep: in chunks
 /// of 16 in the given order, each speed seeded with the previous converged iterated solution of
-/// its chunk (continuation; a closed form carries no more than the solver's own seed).
+/// its chunk (continuation; a closed form carries no more than the solver's own seed). A roller of
+/// finite length (untilted and symmetric, check_scene_for_method) is solved by
+/// LineSolver::solve(LineProfileScene), the ellipsoid by LineSolver::solve(LineScene).
 int run_line(const Problem& p, Output& out) {
-  const double c2 = required_c2(p, "line");
   viscoroll::LineOptions options = p.line;
   options.terms = line_terms(p);
+  // A material of one relaxation time over the scene `scene_at(speed)` builds.
+  const auto run_single = [&](auto scene_at) {
+    return run_sweeps(
+        p, p.tau, out, scene_at,
+        [&](double tau) { return viscoroll::LineSolverD(material(p, tau), options); },
+        [&](double tau, const auto& scene, const auto& s, double seconds) {
+          const auto peak = s.strip(0.0).peak();
+          Record r = {{"method", std::string("line")},
+                      {"tau", tau},
+                      {"speed", scene.speed},
+                      {"vtau", scene.speed * tau}};
+          const Record middle = {{"pmax", peak.pressure}, {"pmax_x", peak.x}};
+          const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
+          r.insert(r.end(), fields.begin(), fields.end());
+          out.add(std::move(r));
+          if (out.wants_profile())
+            out.add_profile(tau, std::nan(""), scene.speed,
+                            s.along_roller(viscoroll::cli::line_profile_stations));
+          note_outcome(out, "line", label(p, tau, scene.speed), s);
+        });
+  };
+  if (p.roller)
+    return std::visit(
+        [&](const auto& tilted) {
+          // Untilted here (check_scene_for_method): the profile itself.
+          using Profile = std::decay_t<decltype(tilted.base())>;
+          return run_single([&](double speed) {
+            return viscoroll::LineProfileScene<Profile>{
+                .roller = tilted.base(), .load = p.load, .speed = speed};
+          });
+        },
+        *p.roller);
+  const double c2 = required_c2(p, "line");
   const auto scene_at = [&](double speed) {
     return viscoroll::LineScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
   };
@@ -808,21 +844,7 @@ int run_line(const Problem& p, Output& out) {
           out.add(std::move(r));
           note_outcome(out, "line", temperature_label(p, temperature, scene.speed), s);
         });
-  return run_sweeps(
-      p, p.tau, out, scene_at,
-      [&](double tau) { return viscoroll::LineSolverD(material(p, tau), options); },
-      [&](double tau, const auto& scene, const auto& s, double seconds) {
-        const auto peak = s.strip(0.0).peak();
-        Record r = {{"method", std::string("line")},
-                    {"tau", tau},
-                    {"speed", scene.speed},
-                    {"vtau", scene.speed * tau}};
-        const Record middle = {{"pmax", peak.pressure}, {"pmax_x", peak.x}};
-        const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
-        r.insert(r.end(), fields.begin(), fields.end());
-        out.add(std::move(r));
-        note_outcome(out, "line", label(p, tau, scene.speed), s);
-      });
+  return run_single(scene_at);
 }
 
 /// --grid for the bem method: elements per semi-axis, default 16.
@@ -964,10 +986,15 @@ int main(int argc, char** argv) {
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");
-    if (!options.profile_out.empty() && problem.method != Method::bem)
+    if (!options.profile_out.empty() && problem.method == Method::plane)
       throw std::invalid_argument(
-          "viscoroll-solve: --profile-out is valid only with --method bem (the contact along the "
-          "roller: docs/cli.md)");
+          "viscoroll-solve: --profile-out is valid only with --method line or bem (the contact "
+          "along the roller: docs/cli.md)");
+    if (!options.profile_out.empty() && problem.method == Method::line && problem.prony)
+      throw std::invalid_argument(
+          "viscoroll-solve: --profile-out with --method line needs a material of one relaxation "
+          "time (standard_linear_solid, elastic): the line solution of a prony spectrum has no "
+          "contact along the roller (the bem method writes it for any material; docs/cli.md)");
     Output out(
         options, problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());

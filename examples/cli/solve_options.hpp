@@ -51,7 +51,8 @@ struct SolveOptions {
   Format format = Format::json;
   std::string csv;       ///< --csv FILE: the sweep as CSV too (empty: none)
   std::string plot;      ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
-  /// --profile-out FILE.csv: the contact along the roller of every bem solve (empty: none)
+  /// --profile-out FILE.csv: the contact along the roller of every line or bem solve (empty:
+  /// none)
   std::string profile_out;
   unsigned threads = 0;  ///< --threads N: threads of the speed sweep (0: every core)
   /// --temperature T[,T...] (degrees Celsius): replaces the scene's "temperature"; valid only
@@ -249,10 +250,10 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     o.profile_out = std::string(given["--profile-out"]);
     if (o.profile_out.empty())
       throw std::invalid_argument("viscoroll-solve: --profile-out expects a file name, got ''");
-    if (o.method && *o.method != Method::bem)
+    if (o.method && *o.method == Method::plane)
       throw std::invalid_argument(
-          "viscoroll-solve: --profile-out is valid only with --method bem (the contact along the "
-          "roller: docs/cli.md)");
+          "viscoroll-solve: --profile-out is valid only with --method line or bem (the contact "
+          "along the roller: docs/cli.md)");
   }
   return o;
 }

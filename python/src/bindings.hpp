@@ -20,6 +20,7 @@
 #include <viscoroll/material/temperature_shift.hpp>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
 
 namespace viscoroll::python {
@@ -43,10 +44,14 @@ struct MaterialSpec {
   std::shared_ptr<const PronySpec> prony;
 };
 
-/// A roller: the paper's ellipsoid (c1, c2) or a cylinder of `radius` (plane only, c1 = 1/radius).
+/// A roller: the paper's ellipsoid (c1, c2), a cylinder of `radius` (plane only, c1 = 1/radius),
+/// or a scene file's roller of finite length (`axial`: crowned, logarithmic or table; c1 =
+/// 1/radius), which the line method solves untilted and symmetric on a material of one
+/// relaxation time (LineSolver::solve(LineProfileScene); cli::check_scene_for_method).
 struct RollerSpec {
   bool cylinder = false;
   double c1 = 0, c2 = 0, radius = 0;
+  std::shared_ptr<const cli::RollerProfile> axial;
 };
 
 /// One scene: what a scene file holds (docs/cli.md), in any consistent units.

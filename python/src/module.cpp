@@ -25,6 +25,7 @@
 #include <viscoroll/plane/plane_solver.hpp>
 
 #include "bindings.hpp"
+#include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 
 #ifndef VISCOROLL_PYTHON_VERSION
@@ -223,7 +224,15 @@ cli::Method to_cli(Method m) {
 /// the discretisation: `grid` (the caller's) wins over the scene's.
 int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid) {
   cli::Scene s;
-  if (scene.roller.cylinder)
+  if (scene.roller.axial && method == Method::bem)
+    throw std::invalid_argument(
+        scene.source + ": roller.profile = \"" + cli::roller_profile_name(*scene.roller.axial) +
+        "\": a roller of finite length is solved here by the line method; the bem method takes "
+        "it from the command line (viscoroll-solve --method bem, docs/cli.md)");
+  if (scene.material.prony) s.material = cli::PronyModel{};
+  if (scene.roller.axial)
+    s.roller = *scene.roller.axial;
+  else if (scene.roller.cylinder)
     s.roller = cli::CylinderProfile{scene.roller.radius};
   else
     s.roller = cli::EllipsoidProfile{scene.roller.c1, scene.roller.c2};
@@ -326,10 +335,21 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
   std::visit(
       [&](const auto& r) {
         using R = std::decay_t<decltype(r)>;
-        if constexpr (std::is_same_v<R, cli::EllipsoidProfile>)
-          out.roller = {false, r.c1, r.c2, 0.0};
-        else
-          out.roller = {true, 1 / r.radius, 0.0, r.radius};
+        if constexpr (std::is_same_v<R, cli::EllipsoidProfile>) {
+          out.roller = {false, r.c1, r.c2, 0.0, nullptr};
+        } else if constexpr (std::is_same_v<R, cli::CylinderProfile>) {
+          out.roller = {true, 1 / r.radius, 0.0, r.radius, nullptr};
+        } else {
+          // The library validates what the reader has not (a table's spline), as the command
+          // line does.
+          try {
+            cli::visit_axial_profile(in.roller, [](const auto&, double) {});
+          } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(source + ": roller: " + e.what());
+          }
+          out.roller = {false, 1 / r.radius, 0.0, r.radius,
+                        std::make_shared<const cli::RollerProfile>(in.roller)};
+        }
       },
       in.roller);
   out.load = in.load;
@@ -434,8 +454,10 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"l", "Half length of the contact along the roller's axis (line, bem)."},
       {"y_minus", "Lower end of the contact along the axis, -l (line, bem)."},
       {"y_plus", "Upper end of the contact along the axis, +l (line, bem)."},
-      {"f0_max", "Largest load per unit length along the roller, N/m (bem)."},
-      {"f0_max_y", "Where the load per unit length is largest, m (bem)."},
+      {"f0_max",
+       "Largest load per unit length along the roller, N/m (bem; line, not with a Prony "
+       "material)."},
+      {"f0_max_y", "Where the load per unit length is largest, m (as f0_max)."},
       {"d", "Penetration (line, bem)."},
       {"a_long_term", "a0 of the static (V tau = 0) long-term contact; bem: of its Hertz ellipse."},
       {"l0", "l of the static long-term contact (line, bem)."},
@@ -483,7 +505,40 @@ std::string material_repr(const MaterialSpec& m) {
          ", f=" + shortest(m.f) + ", tau=" + shortest(m.tau) + ")";
 }
 
+/// A scene file's roller of finite length as its keys: Roller(profile='crowned', radius=...).
+std::string axial_repr(const cli::RollerProfile& roller) {
+  std::string out = "Roller(profile='" + cli::roller_profile_name(roller) + "'";
+  const auto key = [&](const char* name, double x) {
+    out += std::string(", ") + name + "=" + shortest(x);
+  };
+  const auto list = [&](const char* name, const std::vector<double>& xs) {
+    out += std::string(", ") + name + "=[";
+    for (std::size_t i = 0; i < xs.size(); ++i) out += (i ? ", " : "") + shortest(xs[i]);
+    out += "]";
+  };
+  if (const auto* c = std::get_if<cli::CrownedProfile>(&roller)) {
+    key("radius", c->radius);
+    key("flat_length", c->flat_length);
+    key("crown_radius", c->crown_radius);
+    if (std::isfinite(c->length)) key("length", c->length);
+  } else if (const auto* g = std::get_if<cli::LogarithmicProfile>(&roller)) {
+    key("radius", g->radius);
+    key("length", g->length);
+    key("scale", g->scale);
+    if (std::isfinite(g->end_drop)) key("end_drop", g->end_drop);
+  } else {
+    const auto& t = std::get<cli::TableProfile>(roller);
+    key("radius", t.radius);
+    list("y", t.y);
+    list("h", t.h);
+  }
+  const double tilt = cli::roller_tilt(roller);
+  if (tilt != 0) key("tilt", tilt);
+  return out + ")";
+}
+
 std::string roller_repr(const RollerSpec& r) {
+  if (r.axial) return axial_repr(*r.axial);
   if (r.cylinder) return "Cylinder(radius=" + shortest(r.radius) + ")";
   return "Ellipsoid(c1=" + shortest(r.c1) + ", c2=" + shortest(r.c2) + ")";
 }
@@ -509,6 +564,7 @@ double compliance(const MaterialSpec& m, bool long_term) {
 }
 
 py::object roller_object(const RollerSpec& r) {
+  if (r.axial) return py::cast(Roller{r});  // a scene file's roller of finite length
   if (r.cylinder) return py::cast(CylinderRoller{{r}});
   return py::cast(EllipsoidRoller{{r}});
 }
@@ -730,7 +786,9 @@ PYBIND11_MODULE(_viscoroll, m) {
           "The shift law, or None.");
 
   // Rollers.
-  py::class_<vp::Roller>(m, "Roller", "Base class of the roller profiles (Ellipsoid, Cylinder).")
+  py::class_<vp::Roller>(m, "Roller",
+                         "Base class of the roller profiles (Ellipsoid, Cylinder); itself a scene "
+                         "file's roller of finite length (crowned, logarithmic, table).")
       .def("__repr__", [](const vp::Roller& r) { return roller_repr(r.spec); });
   py::class_<EllipsoidRoller, vp::Roller>(
       m, "Ellipsoid",
@@ -740,7 +798,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       .def(py::init([](double c1, double c2) {
              viscoroll::detail::require_positive("c1", c1);
              viscoroll::detail::require_positive("c2", c2);
-             return EllipsoidRoller{{{false, c1, c2, 0.0}}};
+             return EllipsoidRoller{{{false, c1, c2, 0.0, nullptr}}};
            }),
            py::arg("c1"), py::arg("c2"))
       .def_property_readonly(
@@ -752,7 +810,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       "Cylinder(radius)\n\nA cylinder of radius > 0: the plane method's roller (c1 = 1/radius).")
       .def(py::init([](double radius) {
              viscoroll::detail::require_positive("radius", radius);
-             return CylinderRoller{{{true, 1 / radius, 0.0, radius}}};
+             return CylinderRoller{{{true, 1 / radius, 0.0, radius, nullptr}}};
            }),
            py::arg("radius"))
       .def_property_readonly(

@@ -1,13 +1,15 @@
 // viscoroll's Python module: the line-contact solver behind solve_line and sweep_line, over the
 // standard linear solid (LineSolverD) or a Prony series (LineSolver over PronyRelaxation, the
-// line theory for a spectrum). The fields are those of viscoroll-solve --method line
-// (examples/viscoroll_solve.cpp).
+// line theory for a spectrum), for the ellipsoid (LineScene) or a scene file's roller of finite
+// length, untilted and symmetric, on the standard linear solid (LineProfileScene). The fields are
+// those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
 #include <stdexcept>
 #include <utility>
 #include <viscoroll/line/line_solver.hpp>
 
 #include "bindings.hpp"
 #include "cli/line_record.hpp"
+#include "cli/roller_profile.hpp"
 
 namespace viscoroll::python {
 namespace {
@@ -87,10 +89,36 @@ LineScene<double> line_scene(const SceneSpec& scene, double speed) {
   return s;
 }
 
+/// The scene of a roller of finite length (`profile`, untilted: check_for_method) at `speed`.
+template <class Profile>
+LineProfileScene<Profile> profile_scene(Profile profile, const SceneSpec& scene, double speed) {
+  LineProfileScene<Profile> s{.roller = std::move(profile), .load = scene.load, .speed = speed};
+  s.validate();
+  return s;
+}
+
+/// f(profile) with the untilted library profile of the scene's roller of finite length; its
+/// material is of one relaxation time (check_for_method).
+template <class F>
+auto with_profile(const SceneSpec& scene, F f) {
+  if (scene.material.prony)
+    throw std::invalid_argument(
+        "viscoroll: the line method takes a roller of finite length on a material of one "
+        "relaxation time only (StandardLinearSolid, Elastic); a Prony spectrum with the Ellipsoid");
+  return cli::visit_axial_profile(*scene.roller.axial,
+                                  [&](auto profile, double) { return f(std::move(profile)); });
+}
+
 }  // namespace
 
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start) {
   const auto keys = MaterialKeys::of(scene);
+  if (scene.roller.axial)
+    return with_profile(scene, [&](auto profile) {
+      return solve_seeded<LineSolved>(make_solver(scene, terms),
+                                      profile_scene(std::move(profile), scene, speed), Method::line,
+                                      start, keys, terms);
+    });
   if (scene.material.prony)
     return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms),
                                             line_scene(scene, speed), Method::line, start, keys,
@@ -101,8 +129,15 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solv
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   const SweepOptions& options) {
-  for (const double v : speeds) line_scene(scene, v);  // every speed checked before any work
   const auto keys = MaterialKeys::of(scene);
+  if (scene.roller.axial)
+    return with_profile(scene, [&](auto profile) {
+      for (const double v : speeds) profile_scene(profile, scene, v);  // checked before any work
+      return sweep_seeded<LineSolved>(make_solver(scene, terms),
+                                      profile_scene(std::move(profile), scene, 0.0), speeds, keys,
+                                      terms, options);
+    });
+  for (const double v : speeds) line_scene(scene, v);  // every speed checked before any work
   if (scene.material.prony)
     return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms),
                                             line_scene(scene, 0.0), speeds, keys, terms, options);

@@ -1,7 +1,8 @@
 // Rollers of finite length from the command line (issue 21; docs/cli.md, docs/rollers.md): the
 // shipped crowned roller runs with the bem method, --profile-out writes the load along the roller
-// (its rows sum to the load), a tilt and its opposite mirror, and the other methods, a misplaced
-// --profile-out and invalid profiles are errors naming the key.
+// (its rows sum to the load), a tilt and its opposite mirror, and the plane method, a misplaced
+// --profile-out and invalid profiles are errors naming the key (the line method on such rollers:
+// cli_line_profile.test.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -106,7 +107,7 @@ TEST_CASE("cli rollers: a tilt and its opposite mirror", "[cli][rollers]") {
   CHECK(-a["y_minus"].get<double>() > a["y_plus"].get<double>());
 }
 
-TEST_CASE("cli rollers: other methods, a misplaced --profile-out and bad profiles are errors",
+TEST_CASE("cli rollers: plane, a misplaced --profile-out and bad profiles are errors",
           "[cli][rollers]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   const std::string crowned = (scenes_dir() / "crowned_roller.json").string();
@@ -125,11 +126,11 @@ TEST_CASE("cli rollers: other methods, a misplaced --profile-out and bad profile
     "load": 50, "speeds": [0.5], "method": "bem"})";
   const std::string tilt = crowned_scene(dir.path(), "tilt.json", "0.2");
   const std::vector<Case> cases = {
-      {{"--scene", crowned, "--method", "line"}, "roller.profile = \"crowned\" suits the bem method only"},
-      {{"--scene", crowned, "--method", "plane"}, "roller.profile = \"crowned\" suits the bem method only"},
-      {{"--scene", (scenes_dir() / "paper.json").string(), "--method", "line", "--profile-out",
+      {{"--scene", crowned, "--method", "plane"},
+       "roller.profile = \"crowned\" suits the line and bem methods, not plane"},
+      {{"--scene", (scenes_dir() / "polyamide_cylinder.json").string(), "--profile-out",
         (dir.path() / "x.csv").string()},
-       "--profile-out is valid only with --method bem"},
+       "--profile-out is valid only with --method line or bem"},
       {{"--scene", bad}, "roller.length = 0.02 is outside the valid range length > flat_length"},
       {{"--scene", table}, "roller.y[2] = 0 is outside the valid range y[k] > y[k-1]"},
       {{"--scene", tilt}, "roller.tilt = 0.2 is outside the valid range |tilt| < 0.1"},

@@ -21,6 +21,7 @@ CASES = [
     ("rubber_roller.json", None, None, None),
     ("rubber_roller.json", "bem", 6, [0, 3, 7]),
     ("rubber_ball.json", None, None, None),
+    ("crowned_roller_line.json", None, None, None),  # a roller of finite length, line method
 ]
 
 TOLERANCE = 1e-12
@@ -76,7 +77,8 @@ def test_single_speeds_match_the_command_line(viscoroll_solve, scenes_dir, file,
 
 @pytest.mark.parametrize("file,method,grid", [("paper.json", None, None),
                                               ("polyamide_cylinder.json", None, None),
-                                              ("rubber_ball.json", None, None)])
+                                              ("rubber_ball.json", None, None),
+                                              ("crowned_roller_line.json", None, None)])
 def test_sweep_matches_the_command_lines_sweep(viscoroll_solve, scenes_dir, file, method, grid):
     """Both sweep with viscoroll::sweep in chunks of DEFAULT_CHUNK (paper.json: 25 speeds, two
     chunks, so the second chunk's cold start is compared too)."""
@@ -101,6 +103,12 @@ def test_scene_from_json_reads_what_the_command_line_reads(scenes_dir):
     assert scene.speeds.dtype == np.float64 and scene.speeds.shape == (25,)
     cylinder = vr.Scene.from_json(str(scenes_dir / "polyamide_cylinder.json"))
     assert isinstance(cylinder.roller, vr.Cylinder) and cylinder.method == "plane"
+    crowned = vr.Scene.from_json(scenes_dir / "crowned_roller_line.json")
+    assert type(crowned.roller) is vr.Roller and crowned.method == "line"
+    assert repr(crowned.roller) == ("Roller(profile='crowned', radius=0.05, flat_length=0.05, "
+                                    "crown_radius=1, length=0.16)")
+    with pytest.raises(ValueError, match=r'roller.profile = "crowned": a roller of finite length'):
+        vr.solve(crowned, method="bem", speed=1.0)
 
 
 @pytest.mark.parametrize("method,grid", [("plane", None), ("line", None), ("bem", 6)])
