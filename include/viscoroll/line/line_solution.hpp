@@ -59,6 +59,9 @@ struct LineSolution {
     return strip(y).pressure(x);
   }
 
+  /// F0(y) per unit load per length, the long-term compliance (1 + f) c (Eq. 47 with (52)).
+  Real f0_per_load() const { return compliance * (1 + f); }
+
   /// The contact along the roller at `stations` evenly spaced points inside (-l, l) (>= 1):
   /// the load per unit length F0(y)/((1 + f) c) (Eq. 33 with (47): the strip's pseudo-pressure
   /// integrates to (1 + f) c times its load), a(y), b(y), the strip's peak pressure (Eq. 35), the
@@ -67,7 +70,7 @@ struct LineSolution {
     AlongRoller<Real> out;
     out.y_minus = -shape.l;
     out.y_plus = shape.l;
-    const Real per_load = compliance * (1 + f);
+    const Real per_load = f0_per_load();
     for (int k = 1; k <= std::max(stations, 1); ++k) {
       const Real y = shape.l * (Real(2 * k) / Real(std::max(stations, 1) + 1) - 1);
       const auto s = functions(y);

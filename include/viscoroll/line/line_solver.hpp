@@ -840,6 +840,7 @@ class LineSolver {
       sol.iterations = one.iterations;
       sol.residual = one.residual;
       sol.warnings = one.warnings;
+      sol.load_compliance = one.f0_per_load();
       if constexpr (ellipsoid) {
         const auto full = static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
         sol.a_long_term = full.a0;
@@ -970,6 +971,7 @@ class LineSolver {
     sol.a_long_term = slow.a0;
     sol.l_long_term = slow.l;
     sol.d_long_term = slow.d;
+    sol.load_compliance = c_eff * (1 + lengths.creep_ratio);
     if (sol.converged && !(sol.d > 0 && shape.a(Real(0)) > 0 && shape.l > 0)) {
       sol.converged = false;
       sol.root = false;

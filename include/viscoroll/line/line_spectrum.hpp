@@ -421,8 +421,39 @@ struct LineSpectrumSolution {
   std::vector<std::string> warnings;
   int active_terms;               ///< memory terms solved for at this speed
   Real c1;
+  /// The long-term compliance of the terms solved for, c (1 + relaxed)(1 + F') (Eq. 47 with
+  /// (52): F0 integrates to it times the load); f0_per_load() reads it.
+  Real load_compliance{};
   /// The standard linear solid's solution where exactly one term is active.
   std::optional<LineSolution<Real, Quadrature>> single;
+
+  /// F0(y) per unit load per length: the long-term compliance of the terms solved for.
+  Real f0_per_load() const { return single ? single->f0_per_load() : load_compliance; }
+
+  /// The contact along the roller at `stations` evenly spaced points inside (-l, l), as
+  /// LineSolution::along_roller: the load per unit length F0(y)/f0_per_load(), a(y), b(y); the
+  /// strip's peak pressure where one term is active (`single`), else NaN (the strip of a spectrum
+  /// in the line theory is carried by its moments, not by a pressure, docs/theory.md (S14)).
+  AlongRoller<Real> along_roller(int stations = 65) const {
+    if (single) return single->along_roller(stations);
+    AlongRoller<Real> out;
+    out.y_minus = -shape.l;
+    out.y_plus = shape.l;
+    const int n = std::max(stations, 1);
+    for (int k = 1; k <= n; ++k) {
+      const Real y = shape.l * (Real(2 * k) / Real(n + 1) - 1);
+      out.y.push_back(y);
+      out.f0.push_back(f0(y) / load_compliance);
+      out.a.push_back(shape.a(y));
+      out.b.push_back(shape.b(y));
+      out.p_max.push_back(std::numeric_limits<Real>::quiet_NaN());
+      if (out.f0.back() > out.f0_max) {
+        out.f0_max = out.f0.back();
+        out.f0_max_y = y;
+      }
+    }
+    return out;
+  }
 
   Real l() const { return shape.l; }
   Real a(Real y) const { return shape.a(y); }
