@@ -720,7 +720,7 @@ class LineSolver {
     sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
     sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
     sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
-    sol.vtau = in(sol.vtau, length, "V tau", true);
+    if constexpr (SingleTimeModel<Material>) sol.vtau = in(sol.vtau, length, "V tau", true);
     sol.c1 = c1;
     return sol;
   }
@@ -981,22 +981,7 @@ class LineSolver {
     if (sol.converged && !sol.root) sol.warnings.push_back(minimum_warning(rmax));
     for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
       sol.warnings.push_back(std::move(w));
-    // The caller's units (as solve()).
-    const int length = u.length, curvature = u.curvature;
-    const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
-      if (!sol.converged) return times_power_of_two(x, exponent);
-      return detail::representable(x, exponent, what, inputs, zero_allowed);
-    };
-    in(sol.shape.a(Real(0)), length, "the half width a(0)", false);
-    in(sol.shape.b(Real(0)), length, "the offset b(0)", true);
-    sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
-    sol.shape.l = in(sol.shape.l, length, "the half length l", false);
-    sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
-    sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
-    sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
-    sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
-    sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
-    return sol;
+    return in_caller_units(std::move(sol), u, c1, inputs);
   }
 
   Material material_;
