@@ -7,8 +7,8 @@
 // bem continuing from the previous converged solution of the chunk (any thread count, same result).
 // --method plane: Hunter's plane problem (load per unit length, c2 ignored).
 // --method line: the line-contact solver (--grid N the Chebyshev terms, default 6) for the
-// ellipsoid or an untilted symmetric roller of finite length (crowned, logarithmic, table) on a
-// material of one relaxation time; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
+// ellipsoid or an untilted symmetric roller of finite length (crowned, logarithmic, table) on any
+// material; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
 // (the peak of the load along the roller), d, l0, d0 (the static long-term l and d), terms,
 // reason and warnings. --profile-out writes the contact along the roller of each line or bem
 // solve.
