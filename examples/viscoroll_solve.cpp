@@ -7,8 +7,8 @@
 // bem continuing from the previous converged solution of the chunk (any thread count, same result).
 // --method plane: Hunter's plane problem (load per unit length, c2 ignored).
 // --method line: the line-contact solver (--grid N the Chebyshev terms, default 6) for the
-// ellipsoid or an untilted symmetric roller of finite length (crowned, logarithmic, table) on a
-// material of one relaxation time; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
+// ellipsoid or an untilted symmetric roller of finite length (crowned, logarithmic, table) on any
+// material; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
 // (the peak of the load along the roller), d, l0, d0 (the static long-term l and d), terms,
 // reason and warnings. --profile-out writes the contact along the roller of each line or bem
 // solve.
@@ -779,11 +779,12 @@ int line_terms(const Problem& p) {
   return static_cast<int>(n);
 }
 
-/// The line-contact (3-D) solver; for each tau the speeds are swept by viscoroll::sweep: in chunks
-/// of 16 in the given order, each speed seeded with the previous converged iterated solution of
-/// its chunk (continuation; a closed form carries no more than the solver's own seed). A roller of
-/// finite length (untilted and symmetric, check_scene_for_method) is solved by
-/// LineSolver::solve(LineProfileScene), the ellipsoid by LineSolver::solve(LineScene).
+/// The line-contact (3-D) solver; for each tau (a prony material: each temperature) the speeds
+/// are swept by viscoroll::sweep: in chunks of 16 in the given order, each speed seeded with the
+/// previous converged iterated solution of its chunk (continuation; a closed form carries no more
+/// than the solver's own seed). A roller of finite length (untilted and symmetric,
+/// check_scene_for_method) is solved by LineSolver::solve(LineProfileScene), on a spectrum by
+/// docs/theory.md (RP5); the ellipsoid by LineSolver::solve(LineScene).
 int run_line(const Problem& p, Output& out) {
   viscoroll::LineOptions options = p.line;
   options.terms = line_terms(p);
@@ -808,22 +809,8 @@ int run_line(const Problem& p, Output& out) {
           note_outcome(out, "line", label(p, tau, scene.speed), s);
         });
   };
-  if (p.roller)
-    return std::visit(
-        [&](const auto& tilted) {
-          // Untilted here (check_scene_for_method): the profile itself.
-          using Profile = std::decay_t<decltype(tilted.base())>;
-          return run_single([&](double speed) {
-            return viscoroll::LineProfileScene<Profile>{
-                .roller = tilted.base(), .load = p.load, .speed = speed};
-          });
-        },
-        *p.roller);
-  const double c2 = required_c2(p, "line");
-  const auto scene_at = [&](double speed) {
-    return viscoroll::LineScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
-  };
-  if (p.prony)
+  // A prony material at each temperature over the scene `scene_at(speed)` builds.
+  const auto run_spectrum = [&](auto scene_at) {
     return run_sweeps(
         p, p.temperatures, out, scene_at,
         [&](double temperature) {
@@ -842,9 +829,31 @@ int run_line(const Problem& p, Output& out) {
           const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
           r.insert(r.end(), fields.begin(), fields.end());
           out.add(std::move(r));
+          // p_max is NaN (an empty cell) unless one term is active (along_roller).
+          if (out.wants_profile())
+            out.add_profile(std::nan(""), temperature, scene.speed,
+                            s.along_roller(viscoroll::cli::line_profile_stations));
           note_outcome(out, "line", temperature_label(p, temperature, scene.speed), s);
         });
-  return run_single(scene_at);
+  };
+  const auto run = [&](auto scene_at) {
+    return p.prony ? run_spectrum(scene_at) : run_single(scene_at);
+  };
+  if (p.roller)
+    return std::visit(
+        [&](const auto& tilted) {
+          // Untilted here (check_scene_for_method): the profile itself.
+          using Profile = std::decay_t<decltype(tilted.base())>;
+          return run([&](double speed) {
+            return viscoroll::LineProfileScene<Profile>{
+                .roller = tilted.base(), .load = p.load, .speed = speed};
+          });
+        },
+        *p.roller);
+  const double c2 = required_c2(p, "line");
+  return run([&](double speed) {
+    return viscoroll::LineScene<double>{.c1 = p.c1, .c2 = c2, .load = p.load, .speed = speed};
+  });
 }
 
 /// --grid for the bem method: elements per semi-axis, default 16.
@@ -990,11 +999,6 @@ int main(int argc, char** argv) {
       throw std::invalid_argument(
           "viscoroll-solve: --profile-out is valid only with --method line or bem (the contact "
           "along the roller: docs/cli.md)");
-    if (!options.profile_out.empty() && problem.method == Method::line && problem.prony)
-      throw std::invalid_argument(
-          "viscoroll-solve: --profile-out with --method line needs a material of one relaxation "
-          "time (standard_linear_solid, elastic): the line solution of a prony spectrum has no "
-          "contact along the roller (the bem method writes it for any material; docs/cli.md)");
     Output out(
         options, problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());

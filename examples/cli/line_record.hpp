@@ -11,14 +11,15 @@ namespace viscoroll::cli {
 /// of --profile-out: 65 evenly spaced inside (-l, l), y = 0 among them.
 inline constexpr int line_profile_stations = 65;
 
-/// The peak of the load per unit length over the stations of LineSolution::along_roller(stations)
-/// and where it is (the first of equal peaks): F0(y)/((1 + f) c) at y = l (2k/(stations + 1) - 1),
+/// The peak of the load per unit length over the stations of along_roller(stations) (LineSolution
+/// or LineSpectrumSolution) and where it is (the first of equal peaks): F0(y)/f0_per_load() (the
+/// long-term compliance, (1 + f) c of Eq. 47 with (52)) at y = l (2k/(stations + 1) - 1),
 /// k = 1..stations, computed as along_roller computes them but without its strips' peak pressures
 /// (about 5 us against 3-8 ms a solve on the paper's scene); cli_line_profile.test.cpp checks it
 /// against --profile-out's rows, which are along_roller's.
 template <class Solution>
 std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
-  const double per_load = s.compliance * (1 + s.f);
+  const double per_load = s.f0_per_load();
   double peak = 0, at = 0;
   for (int k = 1; k <= stations; ++k) {
     const double y = s.l() * (double(2 * k) / double(stations + 1) - 1);
@@ -32,20 +33,16 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
 }
 
 /// The fields of a line solution `s` (LineSolution or LineSpectrumSolution) after the record's
-/// head (method, the material's keys, speed): the contact's shape up to chi (with a LineSolution,
-/// of the ellipsoid or of a roller profile, the peak of the load per unit length along the
-/// roller, f0_max at f0_max_y, over along_roller(line_profile_stations)'s stations: line_f0_peak;
-/// as the bem's record), then `middle` (the peak pressure pmax, pmax_x; a spectrum's
-/// active_terms), then the iteration's fields. `Record` is a sequence of (key, value) fields built from braces.
+/// head (method, the material's keys, speed): the contact's shape up to chi (with the peak of the
+/// load per unit length along the roller, f0_max at f0_max_y, over
+/// along_roller(line_profile_stations)'s stations: line_f0_peak; as the bem's record), then
+/// `middle` (the peak pressure pmax, pmax_x; a spectrum's active_terms), then the iteration's
+/// fields. `Record` is a sequence of (key, value) fields built from braces.
 template <class Record, class Solution>
 Record line_fields(const Solution& s, const Record& middle, int terms, double seconds) {
-  Record out = {{"a0", s.a(0.0)}, {"b0", s.b(0.0)}, {"l", s.l()}, {"y_minus", -s.l()},
-                {"y_plus", s.l()}};
-  if constexpr (requires { s.along_roller(line_profile_stations); }) {
-    const auto [f0_max, f0_max_y] = line_f0_peak(s, line_profile_stations);
-    const Record peak = {{"f0_max", f0_max}, {"f0_max_y", f0_max_y}};
-    out.insert(out.end(), peak.begin(), peak.end());
-  }
+  const auto [f0_max, f0_max_y] = line_f0_peak(s, line_profile_stations);
+  Record out = {{"a0", s.a(0.0)},  {"b0", s.b(0.0)},   {"l", s.l()},          {"y_minus", -s.l()},
+                {"y_plus", s.l()}, {"f0_max", f0_max}, {"f0_max_y", f0_max_y}};
   const Record shape = {{"d", s.d},
                         {"a_long_term", s.a_long_term},
                         {"l0", s.l_long_term},

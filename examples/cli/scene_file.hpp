@@ -688,8 +688,8 @@ inline std::optional<std::size_t> table_asymmetry(const TableProfile& t) {
 
 /// Checks what depends on the method: the cylinder is the plane method's roller only; a roller
 /// of finite length (crowned, logarithmic, table) is the bem's and the line method's, the line
-/// method's untilted and symmetric and on a material of one relaxation time
-/// (LineSolver::solve(LineProfileScene), SingleTimeModel); the line method needs a slender
+/// method's untilted and symmetric, on any material (LineSolver::solve(LineProfileScene), of a
+/// spectrum by docs/theory.md (RP5)); the line method needs a slender
 /// contact (0 < c2 < 8 e^-3 c1, LineScene::validate), the bem method 1e-10 <= c2/c1 <= 1e10
 /// (BemScene::validate); the file's grid, its method's range.
 inline void check_scene_for_method(const Scene& scene, Method method, const std::string& source) {
@@ -717,11 +717,6 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
                ", h = " + scene_detail::shortest(t->h[j]) +
                "); the bem method takes any table");
         }
-      if (std::holds_alternative<PronyModel>(scene.material))
-        fail("material.model = \"prony\" with " + profile +
-             ": the line method takes a roller of finite length on a material of one relaxation "
-             "time only (standard_linear_solid, elastic), and a prony spectrum with the "
-             "\"ellipsoid\" roller only; the bem method takes both");
     }
   }
   if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)

@@ -46,8 +46,8 @@ struct MaterialSpec {
 
 /// A roller: the paper's ellipsoid (c1, c2), a cylinder of `radius` (plane only, c1 = 1/radius),
 /// or a scene file's roller of finite length (`axial`: crowned, logarithmic or table; c1 =
-/// 1/radius), which the line method solves untilted and symmetric on a material of one
-/// relaxation time (LineSolver::solve(LineProfileScene); cli::check_scene_for_method).
+/// 1/radius), which the line method solves untilted and symmetric on any material
+/// (LineSolver::solve(LineProfileScene); cli::check_scene_for_method).
 struct RollerSpec {
   bool cylinder = false;
   double c1 = 0, c2 = 0, radius = 0;

@@ -454,9 +454,7 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"l", "Half length of the contact along the roller's axis (line, bem)."},
       {"y_minus", "Lower end of the contact along the axis, -l (line, bem)."},
       {"y_plus", "Upper end of the contact along the axis, +l (line, bem)."},
-      {"f0_max",
-       "Largest load per unit length along the roller, N/m (bem; line, not with a Prony "
-       "material)."},
+      {"f0_max", "Largest load per unit length along the roller, N/m (line, bem)."},
       {"f0_max_y", "Where the load per unit length is largest, m (as f0_max)."},
       {"d", "Penetration (line, bem)."},
       {"a_long_term", "a0 of the static (V tau = 0) long-term contact; bem: of its Hertz ellipse."},

@@ -1,8 +1,8 @@
 // viscoroll's Python module: the line-contact solver behind solve_line and sweep_line, over the
 // standard linear solid (LineSolverD) or a Prony series (LineSolver over PronyRelaxation, the
 // line theory for a spectrum), for the ellipsoid (LineScene) or a scene file's roller of finite
-// length, untilted and symmetric, on the standard linear solid (LineProfileScene). The fields are
-// those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
+// length, untilted and symmetric (LineProfileScene; on a spectrum docs/theory.md (RP5)). The fields
+// are those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
 #include <stdexcept>
 #include <utility>
 #include <viscoroll/line/line_solver.hpp>
@@ -97,14 +97,10 @@ LineProfileScene<Profile> profile_scene(Profile profile, const SceneSpec& scene,
   return s;
 }
 
-/// f(profile) with the untilted library profile of the scene's roller of finite length; its
-/// material is of one relaxation time (check_for_method).
+/// f(profile) with the untilted library profile of the scene's roller of finite length
+/// (check_for_method).
 template <class F>
 auto with_profile(const SceneSpec& scene, F f) {
-  if (scene.material.prony)
-    throw std::invalid_argument(
-        "viscoroll: the line method takes a roller of finite length on a material of one "
-        "relaxation time only (StandardLinearSolid, Elastic); a Prony spectrum with the Ellipsoid");
   return cli::visit_axial_profile(*scene.roller.axial,
                                   [&](auto profile, double) { return f(std::move(profile)); });
 }
@@ -113,36 +109,38 @@ auto with_profile(const SceneSpec& scene, F f) {
 
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start) {
   const auto keys = MaterialKeys::of(scene);
+  // The scene `scene_at` builds at `speed`, by the material's solver.
+  const auto solve = [&](auto scene_at) {
+    if (scene.material.prony)
+      return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms), scene_at(speed),
+                                              Method::line, start, keys, terms);
+    return solve_seeded<LineSolved>(make_solver(scene, terms), scene_at(speed), Method::line, start,
+                                    keys, terms);
+  };
   if (scene.roller.axial)
     return with_profile(scene, [&](auto profile) {
-      return solve_seeded<LineSolved>(make_solver(scene, terms),
-                                      profile_scene(std::move(profile), scene, speed), Method::line,
-                                      start, keys, terms);
+      return solve([&](double v) { return profile_scene(profile, scene, v); });
     });
-  if (scene.material.prony)
-    return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms),
-                                            line_scene(scene, speed), Method::line, start, keys,
-                                            terms);
-  return solve_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, speed), Method::line,
-                                  start, keys, terms);
+  return solve([&](double v) { return line_scene(scene, v); });
 }
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   const SweepOptions& options) {
   const auto keys = MaterialKeys::of(scene);
+  // The scenes `scene_at` builds, every speed checked before any work, by the material's solver.
+  const auto sweep = [&](auto scene_at) {
+    for (const double v : speeds) scene_at(v);
+    if (scene.material.prony)
+      return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms), scene_at(0.0),
+                                              speeds, keys, terms, options);
+    return sweep_seeded<LineSolved>(make_solver(scene, terms), scene_at(0.0), speeds, keys, terms,
+                                    options);
+  };
   if (scene.roller.axial)
     return with_profile(scene, [&](auto profile) {
-      for (const double v : speeds) profile_scene(profile, scene, v);  // checked before any work
-      return sweep_seeded<LineSolved>(make_solver(scene, terms),
-                                      profile_scene(std::move(profile), scene, 0.0), speeds, keys,
-                                      terms, options);
+      return sweep([&](double v) { return profile_scene(profile, scene, v); });
     });
-  for (const double v : speeds) line_scene(scene, v);  // every speed checked before any work
-  if (scene.material.prony)
-    return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms),
-                                            line_scene(scene, 0.0), speeds, keys, terms, options);
-  return sweep_seeded<LineSolved>(make_solver(scene, terms), line_scene(scene, 0.0), speeds, keys,
-                                  terms, options);
+  return sweep([&](double v) { return line_scene(scene, v); });
 }
 
 }  // namespace viscoroll::python

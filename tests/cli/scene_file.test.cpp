@@ -153,9 +153,10 @@ TEST_CASE("cli scene file: the method's own ranges", "[cli][scene]") {
 
 TEST_CASE("cli scene file: the shipped scenes parse", "[cli][scene]") {
   const std::filesystem::path dir = std::filesystem::path(VISCOROLL_SOURCE_DIR) / "examples/scenes";
-  for (const char* name : {"paper.json", "polyamide_cylinder.json", "rubber_roller.json",
-                           "rubber_ball.json", "rubber_prony_bem.json", "rubber_dma_bem.json",
-                           "crowned_roller.json", "crowned_roller_line.json"}) {
+  for (const char* name :
+       {"paper.json", "polyamide_cylinder.json", "rubber_roller.json", "rubber_ball.json",
+        "rubber_prony_bem.json", "rubber_dma_bem.json", "crowned_roller.json",
+        "crowned_roller_line.json", "crowned_roller_prony_line.json"}) {
     INFO(name);
     const std::string path = (dir / name).string();
     const Scene s = parse_scene(read_scene_file(path), path);

@@ -22,6 +22,7 @@ CASES = [
     ("rubber_roller.json", "bem", 6, [0, 3, 7]),
     ("rubber_ball.json", None, None, None),
     ("crowned_roller_line.json", None, None, None),  # a roller of finite length, line method
+    ("crowned_roller_prony_line.json", None, None, None),  # the same roller on a prony spectrum
 ]
 
 TOLERANCE = 1e-12
@@ -78,7 +79,8 @@ def test_single_speeds_match_the_command_line(viscoroll_solve, scenes_dir, file,
 @pytest.mark.parametrize("file,method,grid", [("paper.json", None, None),
                                               ("polyamide_cylinder.json", None, None),
                                               ("rubber_ball.json", None, None),
-                                              ("crowned_roller_line.json", None, None)])
+                                              ("crowned_roller_line.json", None, None),
+                                              ("crowned_roller_prony_line.json", None, None)])
 def test_sweep_matches_the_command_lines_sweep(viscoroll_solve, scenes_dir, file, method, grid):
     """Both sweep with viscoroll::sweep in chunks of DEFAULT_CHUNK (paper.json: 25 speeds, two
     chunks, so the second chunk's cold start is compared too)."""

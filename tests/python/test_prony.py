@@ -1,7 +1,8 @@
 """A Prony material from Python (docs/python.md, "Materials with a spectrum"): one relaxation
 term equals the standard linear solid of its creep form in each method; a temperature is the
 reference material with every time multiplied by a_T; the records carry temperature, a_T and
-active_terms as the command line's; the shipped prony scene agrees with viscoroll-solve."""
+active_terms as the command line's; the line method takes a crowned roller on a spectrum; the
+shipped prony scene agrees with viscoroll-solve."""
 
 import json
 import math
@@ -82,6 +83,22 @@ def test_the_line_method_gives_the_shape_not_the_pressure():
     s = vr.sweep(scene, speeds=[0.01, 0.1], method="line", threads=1)
     assert s["converged"].all() and list(s["active_terms"]) == [2, 2]
     assert s["a0"][0] == r.a0  # the sweep's first speed is a cold start, as solve()
+
+
+def test_the_line_method_solves_a_crowned_roller_on_a_spectrum(scenes_dir):
+    """LineSolver<PronyRelaxation>::solve(LineProfileScene) from a scene file: the three terms
+    active at every speed, the load's edge peak just past the flat part's ends (|y| = 25 mm)."""
+    scene = vr.Scene.from_json(scenes_dir / "crowned_roller_prony_line.json")
+    assert isinstance(scene.material, vr.Prony) and type(scene.roller) is vr.Roller
+    s = vr.sweep(scene, threads=1)
+    assert s["converged"].all() and list(s["active_terms"]) == [3, 3, 3]
+    r = vr.solve(scene, speed=1.0)
+    assert r.converged and r.terms == 4 and r.y_plus == r.l
+    assert 0.025 < abs(r.f0_max_y) < 0.04
+    # f0(y) is the load per length times the long-term compliance: the peak's ratio holds at y = 0.
+    assert r.f0(r.f0_max_y) > r.f0(0.0) > 0
+    with pytest.raises(ValueError, match="pressure\\(x, y\\) is not available"):
+        r.pressure(0.0, 0.0)
 
 
 @pytest.mark.parametrize("method, grid, speeds", [("bem", None, [0.001, 0.01]), ("line", None, [0.01])])
