@@ -33,21 +33,8 @@ std::string line_scene(const std::string& material, const std::string& roller) {
 
 /// The --profile-out rows (tau, temperature, speed, y, f0, a, b, p_max) by speed.
 std::map<double, std::vector<std::vector<double>>> rows_by_speed(const fs::path& file) {
-  std::istringstream in(slurp(file));
-  std::string line;
-  std::getline(in, line);
-  REQUIRE(line == "tau,temperature,speed,y,f0,a,b,p_max");
   std::map<double, std::vector<std::vector<double>>> out;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::istringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ','))
-      row.push_back(field.empty() ? std::nan("") : std::stod(field));
-    if (line.back() == ',') row.push_back(std::nan(""));  // an empty last cell (p_max)
-    REQUIRE(row.size() == 8);
-    out[row[2]].push_back(row);
-  }
+  for (auto& row : profile_rows(file)) out[row[2]].push_back(std::move(row));
   return out;
 }
 

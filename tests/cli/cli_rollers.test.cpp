@@ -17,26 +17,6 @@ namespace {
 
 using namespace viscoroll::cli_test;
 
-/// The rows of a --profile-out file: header checked, each row's eight fields (empty: NaN).
-std::vector<std::vector<double>> profile_rows(const fs::path& file) {
-  std::istringstream in(slurp(file));
-  std::string line;
-  std::getline(in, line);
-  REQUIRE(line == "tau,temperature,speed,y,f0,a,b,p_max");
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::istringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ','))
-      row.push_back(field.empty() ? std::nan("") : std::stod(field));
-    if (line.back() == ',') row.push_back(std::nan(""));
-    REQUIRE(row.size() == 8);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 /// A crowned roller scene file with tilt `tilt` in `dir`.
 std::string crowned_scene(const fs::path& dir, const std::string& name, const std::string& tilt) {
   const fs::path path = dir / name;

@@ -7,6 +7,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -117,6 +119,27 @@ inline std::function<void(nlohmann::json&)> drop_at(const char* pointer) {
     const nlohmann::json::json_pointer p(pointer);
     s[p.parent_pointer()].erase(p.back());
   };
+}
+
+/// The rows of a --profile-out file (tau, temperature, speed, y, f0, a, b, p_max): the header
+/// checked, each row's eight fields (an empty cell: NaN).
+inline std::vector<std::vector<double>> profile_rows(const fs::path& file) {
+  std::istringstream in(slurp(file));
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "tau,temperature,speed,y,f0,a,b,p_max");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::istringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ','))
+      row.push_back(field.empty() ? std::nan("") : std::stod(field));
+    if (line.back() == ',') row.push_back(std::nan(""));  // an empty last cell (p_max)
+    REQUIRE(row.size() == 8);
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 }  // namespace viscoroll::cli_test
