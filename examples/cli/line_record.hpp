@@ -2,6 +2,7 @@
 // by viscoroll-solve and the Python bindings so that both print the same record.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -17,6 +18,9 @@ inline constexpr int line_profile_stations = 65;
 /// k = 1..stations, computed as along_roller computes them but without its strips' peak pressures
 /// (about 5 us against 3-8 ms a solve on the paper's scene); cli_line_profile.test.cpp checks it
 /// against --profile-out's rows, which are along_roller's.
+/// Both are NaN (null in the record) where a station's value is not a finite double: the load per
+/// unit length of a scene whose numbers lie near the ends of the range (load/length beyond it),
+/// as vtau where speed * tau overflows (docs/cli.md).
 template <class Solution>
 std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
   const double per_load = s.f0_per_load();
@@ -24,6 +28,7 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
   for (int k = 1; k <= stations; ++k) {
     const double y = s.l() * (double(2 * k) / double(stations + 1) - 1);
     const double f0 = s.f0(y) / per_load;
+    if (!std::isfinite(f0)) return {std::nan(""), std::nan("")};
     if (f0 > peak) {
       peak = f0;
       at = y;

@@ -104,7 +104,8 @@ std::string converged_defect(const nlohmann::json& line, const std::string& meth
   // The parser has rejected inf and nan already (and a literal beyond a double): a number that
   // was not finite can only be null here.
   for (const auto& [key, value] : line.items()) {
-    if (key == "vtau") continue;  // null where speed * tau overflows (docs/cli.md)
+    // null where speed * tau, resp. the load per unit length, overflows (docs/cli.md)
+    if (key == "vtau" || key == "f0_max" || key == "f0_max_y") continue;
     if (value.is_null()) return "converged with " + key + " null";
   }
   std::vector<const char*> sizes = {"a0"};
