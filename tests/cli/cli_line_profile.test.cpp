@@ -189,11 +189,7 @@ TEST_CASE(
        "--profile-out is valid only with --method line or bem"},
   };
   for (const auto& c : cases) {
-    const Run r = run(c.args);
-    INFO(c.args.at(1) << "\n" << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK_THAT(r.err, Catch::Contains(c.message));
+    check_refused(c.args, c.message);
     CHECK(!fs::exists(csv));
   }
 }

@@ -121,6 +121,15 @@ inline std::function<void(nlohmann::json&)> drop_at(const char* pointer) {
   };
 }
 
+/// `args` refused as bad input: exit 2, nothing on stdout, `message` on stderr.
+inline void check_refused(const std::vector<std::string>& args, const std::string& message) {
+  const Run r = run(args);
+  INFO(args.at(1) << "\n" << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains(message));
+}
+
 /// The rows of a --profile-out file (tau, temperature, speed, y, f0, a, b, p_max): the header
 /// checked, each row's eight fields (an empty cell: NaN).
 inline std::vector<std::vector<double>> profile_rows(const fs::path& file) {
