@@ -8,6 +8,9 @@
 //                       LineOptions::quadrature_tolerance = 10^-k (k = 0: the default, eps);
 //   BM_line_solve_fast/s: a cold solve with LineOptions::fast() (docs/performance.md, "The fast
 //                       setting") at V tau/a0 = s/1000;
+//   BM_line_solve_fast_full_stages/s: the same with every continuation stage iterated to a root
+//                       from the damping 1e-3 (fast() with stage_tolerance 0, stage_damping
+//                       1e-3), for the ratio in one run;
 //   BM_line_crowned_roller/N/s/k: a cold solve of the crowned roller of docs/validation.md
 //                       ("Rolling rollers of any profile": C1 = 1, flat part 10, crown radius 20,
 //                       f = 2, (1 + f) c P = 0.3, long-term static a0 = 0.2878) at V tau/a0 =
@@ -68,6 +71,13 @@ void BM_line_solve_tolerance(benchmark::State& state) {
 
 void BM_line_solve_fast(benchmark::State& state) {
   solve_with(state, viscoroll::LineOptions::fast(), static_cast<double>(state.range(0)) / 1000);
+}
+
+void BM_line_solve_fast_full_stages(benchmark::State& state) {
+  viscoroll::LineOptions options = viscoroll::LineOptions::fast();
+  options.stage_tolerance = 0;
+  options.stage_damping = 1e-3;
+  solve_with(state, options, static_cast<double>(state.range(0)) / 1000);
 }
 
 void BM_line_crowned_roller(benchmark::State& state) {
@@ -147,6 +157,11 @@ BENCHMARK(BM_line_solve_tolerance)
     ->Args({5, 1000, 4})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_solve_fast)->Arg(10)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_solve_fast_full_stages)
+    ->Arg(10)
+    ->Arg(1000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_crowned_roller)
     ->ArgsProduct({{5, 8}, {100, 1000, 10000}, {0, 4}})
     ->Unit(benchmark::kMillisecond);

@@ -94,3 +94,39 @@ TEST_CASE("numerics: Levenberg-Marquardt stops at a minimum with no root near", 
   // In the minimum's basin, phi is not below the minimum's (to its rounding).
   REQUIRE(r.squaredNorm() / 2 >= FreudensteinRoth::minimum_phi() * (1 - 4 * eps));
 }
+
+TEST_CASE("numerics: Levenberg-Marquardt's stop tolerance and starting damping", "[numerics]") {
+  // From Rosenbrock's start: with stop_tolerance 1e-2 the iteration returns at the first iterate
+  // with max |r| <= 1e-2, neither converged nor a minimum, reason "stage tolerance"; its r is the
+  // residual there. A start already within it returns at once, with no iteration.
+  const Rosenbrock problem{true};
+  LsqVector x = point({-1.2, 1}), r;
+  REQUIRE(problem(x, r));
+  const LeastSquaresOptions<double> stop{.stop_tolerance = 1e-2};
+  const auto out = levenberg_marquardt(problem, x, r, stop);
+  INFO(out.reason << " after " << out.iterations << " iterations, x = " << x.transpose());
+  REQUIRE(out.reason == "stage tolerance");
+  REQUIRE_FALSE(out.converged);
+  REQUIRE_FALSE(out.minimum);
+  REQUIRE(out.iterations >= 1);
+  require_residual_at(problem, x, r);
+  REQUIRE(r.cwiseAbs().maxCoeff() <= 1e-2);
+  const LsqVector held = x;
+  const auto again = levenberg_marquardt(problem, x, r, stop);
+  REQUIRE(again.reason == "stage tolerance");
+  REQUIRE(again.iterations == 0);
+  REQUIRE(x == held);
+
+  // r = 1/x - 2 from x = 0.45, near the root: the undamped first step (initial_damping 1e-12)
+  // is Newton's, x + x (1 - 2x) = 0.4950, against 0.45 + 0.045 / (1 + 1e-3) with the default's
+  // 1e-3 on J^T J; each then converges to the root.
+  const Reciprocal reciprocal;
+  for (const double damping : {1e-3, 1e-12}) {
+    LsqVector y = point({0.45}), ry;
+    REQUIRE(reciprocal(y, ry));
+    const LeastSquaresOptions<double> one{.max_iterations = 1, .initial_damping = damping};
+    levenberg_marquardt(reciprocal, y, ry, one);
+    INFO("initial_damping " << damping << ": x = " << y[0]);
+    REQUIRE(std::abs(y[0] - (0.45 + 0.045 / (1 + damping))) <= 8 * eps);
+  }
+}

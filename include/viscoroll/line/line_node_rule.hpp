@@ -55,18 +55,19 @@ class LineNodeRule {
   Real tolerance() const { return tolerance_; }
 
   void point(const LineShape<Real>& s, Real y, Real x0, LineNodes<Real>& nd) const {
+    nd.clear();
     nd.d1 = s.l - y;
     nd.d2 = s.l + y;
     nd.tolerance = tolerance_;
     const Real c = std::min(Real(x0 / vtau_), Real(1));
     detail::append_log_mapped_nodes<Quadrature>(
         nd.tn, nd.tw, t_max_, c, boost::math::constants::half_pi<Real>(), tolerance_);
-    std::vector<Real> sn, sw;
     for (int side = 0; side < 2; ++side) {
-      sn.clear();
-      sw.clear();
-      append_side_nodes(s, side == 0 ? nd.d1 : nd.d2, side == 0 ? nd.d2 : nd.d1, x0, sn, sw);
-      nd.add_side(y, side == 0 ? 1 : -1, sn, sw);
+      nd.side_s.clear();
+      nd.side_w.clear();
+      append_side_nodes(s, side == 0 ? nd.d1 : nd.d2, side == 0 ? nd.d2 : nd.d1, x0, nd.side_s,
+                        nd.side_w);
+      nd.add_side(y, side == 0 ? 1 : -1, nd.side_s, nd.side_w);
     }
   }
 

@@ -47,12 +47,24 @@ namespace viscoroll {
 ///     exterior_right's far-field series keeps to it.
 ///   - `add_side(y, sign, s, w)`: appends the nodes y' = y + sign s_j (sign = +1 or -1) with the
 ///     weights w_j.
+///   - `clear()`: empties the node lists, keeping their storage, so that one LineNodes serves the
+///     points of a residual evaluation in turn without allocating; `side_s`, `side_w` are the
+///     builder's storage for one side's nodes (LineNodeRule::point), not part of the set.
 template <RealScalar Real>
 struct LineNodes {
   std::vector<Real> yp, dist, weight;
   std::vector<Real> tn, tw;
   Real d1 = 0, d2 = 0;
   Real tolerance = 0;
+  std::vector<Real> side_s, side_w;
+
+  void clear() {
+    yp.clear();
+    dist.clear();
+    weight.clear();
+    tn.clear();
+    tw.clear();
+  }
 
   void add_side(Real y, int sign, const std::vector<Real>& s, const std::vector<Real>& w) {
     for (std::size_t j = 0; j < s.size(); ++j) {
@@ -158,7 +170,8 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
   const Real v = vtau;
   const std::size_t nt = nd.tn.size();
   // wk: the t-weights W_k with e^-t and V; wtu2 (W u^2) only for the slopes.
-  Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(nt);
+  Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(nt),
+      p5(slopes ? nt : 0);
   std::vector<Real> xk(nt);
   for (std::size_t k = 0; k < nt; ++k) {
     xk[k] = x0 + v * nd.tn[k];
@@ -202,7 +215,7 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
       if (slopes != nullptr) {
         // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
         // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2.
-        const Eigen::Array<Real, Eigen::Dynamic, 1> p5 = p2 * p2 * p2.sqrt();
+        p5 = p2 * p2 * p2.sqrt();
         k2_x0 = -w * (sigma2 * (wk * p5).sum() - 2 * (wtu2 * p5).sum()) / (x0 * x0 * x0);
         k2_l = k2 + 3 * w * sigma2 * (wu * p5).sum() / (x0 * x0);
       }

@@ -190,12 +190,28 @@ class LineResidual {
 
   /// (34) and the leading-edge residual at one y, |y| < l (scaled as in operator()).
   bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle) const {
+    PointWork work;
+    return at_point(s, d, y, r34, rle, work);
+  }
+
+ private:
+  /// The storage of one point's node set and differences, reused from point to point.
+  struct PointWork {
+    LineNodes<Real> nd;
+    std::vector<Real> df0, dq;
+  };
+
+  bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle,
+                PointWork& work) const {
     const Real c1 = p_.c1;
     const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
     if (!(here.a > 0) || !(here.a + here.b > 0)) return false;
-    LineNodes<Real> nd;
+    LineNodes<Real>& nd = work.nd;
     rule_.point(s, y, here.a + here.b, nd);
-    std::vector<Real> df0(nd.yp.size()), dq(nd.yp.size());
+    std::vector<Real>& df0 = work.df0;
+    std::vector<Real>& dq = work.dq;
+    df0.resize(nd.yp.size());
+    dq.resize(nd.yp.size());
     for (std::size_t j = 0; j < nd.yp.size(); ++j) {
       const auto there = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), p_.vtau, p_.f);
       df0[j] = there.f0 - here.f0;
@@ -206,6 +222,8 @@ class LineResidual {
     point_rows(d, y, here, nd, df0, right, r34, rle);
     return true;
   }
+
+ public:
 
   /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/theory.md section 6):
   /// the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
@@ -311,9 +329,10 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector&
   const LineShape<Real> s = shape(x);
   const Real d = penetration(x);
   const int m = points();
+  PointWork work;
   for (int i = 0; i < m; ++i) {
     Real r34 = 0, rle = 0;
-    if (!at_point(s, d, t_[i] * s.l, r34, rle)) return false;
+    if (!at_point(s, d, t_[i] * s.l, r34, rle, work)) return false;
     // (34) depends on b through C1 V b, the leading-edge condition through its slope C1 V (as
     // V tau >> a): adding V/a_ref times the latter (scaled to an error in b/a_ref) cancels the b
     // dependence of (34) to first order, so that (34) speaks for a, l and d at every speed. A row
@@ -340,7 +359,12 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
   const LineShape<Real> s = shape(x);
   const Real d = penetration(x), c1 = p_.c1, v = p_.vtau;
   const Real scale34 = c1 * p_.a_ref * p_.a_ref;
-  Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu);
+  Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu), dan(nu), dbn(nu);
+  // Storage reused from point to point.
+  LineNodes<Real> nd;
+  std::vector<Real> df0, dq;
+  std::vector<StripDerivatives> dn;
+  ExteriorSlopes<Real> slopes;
   for (int i = 0; i < m; ++i) {
     const Real t = t_[i], y = t * s.l;
     const auto dh = strip_derivatives(s.a(y), s.b(y));
@@ -350,20 +374,18 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
     shape_gradient(s, y, a, da_i, db_i);
     df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
     dq_i = dh.q_a * da_i + dh.q_b * db_i;
-    LineNodes<Real> nd;
     rule_.point(s, y, x0, nd);
     const std::size_t count = nd.yp.size();
-    std::vector<Real> df0(count), dq(count);
+    df0.resize(count);
+    dq.resize(count);
     dlhs.setZero();
     dright.setZero();
-    Vector dan(nu), dbn(nu);
-    std::vector<StripDerivatives> dn(count);
+    dn.resize(count);
     for (std::size_t j = 0; j < count; ++j) {
       dn[j] = strip_derivatives(s.a(nd.yp[j]), s.b(nd.yp[j]));
       df0[j] = dn[j].value.f0 - here.f0;
       dq[j] = dn[j].value.q - here.q;
     }
-    ExteriorSlopes<Real> slopes;
     const Real right = exterior_right(nd, dq, here.q, x0, v, &slopes);
     Real r34 = 0, rle = 0;
     const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
@@ -413,7 +435,7 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
   std::vector<Real> nodes, weights;
   rule_.load(s, nodes, weights);
   Real sum = 0;
-  Vector dsum = Vector::Zero(nu), dan(nu), dbn(nu);
+  Vector dsum = Vector::Zero(nu);
   for (std::size_t j = 0; j < nodes.size(); ++j) {
     const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
     const auto& sf = dj.value;

@@ -106,15 +106,29 @@ struct LineOptions {
   /// pessimistic: on the paper's scene 1e-8 moved the solution by at most 1e-12 and 1e-4 by at
   /// most 6e-8 (docs/performance.md, "The fast setting").
   double quadrature_tolerance = 0;
+  /// max |r| of the scaled equations at which an intermediate stage of the continuation in N
+  /// (docs/line-solver.md, "Continuation in N") stops and seeds the next: 0, the default, a root
+  /// of every stage; at most 0.1. A stage's iterate only seeds the next, so a loose stop saves
+  /// its end game (the Newton steps to a root) where the last stage lands on the same root
+  /// (docs/performance.md, "The fast setting").
+  double stage_tolerance = 0;
+  /// Levenberg-Marquardt's starting damping at the stages after the first (the first, from the
+  /// cold start or a seed, starts at 1e-3): the default 1e-3; 1e-12 ... 1. A stage starts from
+  /// the previous stage's solution padded with zero coefficients, near its root, where an
+  /// undamped Gauss-Newton step is the right first step.
+  double stage_damping = 1e-3;
 
   /// The fast setting: the smallest discretisation measured within 1% of the converged
   /// least-squares solution (oversampled, 24 terms in s) in a(0), l, d, chi and b(0) (the last
   /// relative to a(0)) at 100 speeds V tau/a0 = 1e-3 ... 1e3 of the paper's scene
-  /// (docs/performance.md, "The fast setting"): 5 terms, integrals to 1e-4.
+  /// (docs/performance.md, "The fast setting"): 5 terms, integrals to 1e-4, intermediate stages
+  /// to 1e-2 and started at the damping 1e-9.
   static LineOptions fast() {
     LineOptions options;
     options.terms = 5;
     options.quadrature_tolerance = 1e-4;
+    options.stage_tolerance = 1e-2;
+    options.stage_damping = 1e-9;
     return options;
   }
 
@@ -127,6 +141,10 @@ struct LineOptions {
     detail::require(quadrature_tolerance >= 0 && quadrature_tolerance <= 1e-4,
                     "quadrature_tolerance", quadrature_tolerance,
                     "0 <= quadrature_tolerance <= 1e-4 (0: the scalar's epsilon)");
+    detail::require(stage_tolerance >= 0 && stage_tolerance <= 0.1, "stage_tolerance",
+                    stage_tolerance, "0 <= stage_tolerance <= 0.1 (0: a root of every stage)");
+    detail::require(stage_damping >= 1e-12 && stage_damping <= 1, "stage_damping", stage_damping,
+                    "1e-12 <= stage_damping <= 1");
   }
 };
 
@@ -393,6 +411,14 @@ class LineSolver {
             .root_tolerance = root_tolerance(),
             .analytic_jacobian = options_.jacobian == LineJacobian::analytic};
   }
+  /// The settings of continuation stage k: an intermediate stage stops at
+  /// LineOptions::stage_tolerance, a stage after the first starts at LineOptions::stage_damping.
+  numerics::LeastSquaresOptions<Real> stage_settings(numerics::LeastSquaresOptions<Real> settings,
+                                                     std::size_t k, bool last) const {
+    if (!last) settings.stop_tolerance = Real(options_.stage_tolerance);
+    if (k > 0) settings.initial_damping = Real(options_.stage_damping);
+    return settings;
+  }
   /// Whether a stop short of a root goes on to the certified least-squares minimum
   /// (least_squares_solution): LineOptions::least_squares, with the semi-analytic Jacobian.
   bool minimises() const {
@@ -540,9 +566,10 @@ class LineSolver {
           return failure(u, slow, c, f, vtau, res, x, "initial guess outside the domain",
                          iterations);
       }
-      numerics::LeastSquaresOutcome out = numerics::levenberg_marquardt(res, x, r, settings);
-      iterations += out.iterations;
       const bool last = k + 1 == stages.size();
+      numerics::LeastSquaresOutcome out =
+          numerics::levenberg_marquardt(res, x, r, stage_settings(settings, k, last));
+      iterations += out.iterations;
       if (last && least_squares && !out.converged && !out.undefined)
         out = least_squares_solution(res, x, r, settings, iterations);
       if (out.undefined)

@@ -65,6 +65,12 @@ struct LeastSquaresOptions {
   /// returns false); false, forward differences always (difference_jacobian). The minimum always
   /// takes the problem's.
   bool analytic_jacobian = true;
+  /// Levenberg-Marquardt's damping mu at the first step (Marquardt's scaling, below).
+  Real initial_damping = Real(1e-3);
+  /// Levenberg-Marquardt returns as soon as max |r| falls to this level (0: never), with
+  /// `converged` false and the reason "stage tolerance": the stop of a continuation stage whose
+  /// iterate only seeds the next one (LineOptions::stage_tolerance).
+  Real stop_tolerance = Real(0);
 };
 
 /// How a least-squares minimiser stopped; x and r hold its last accepted iterate.

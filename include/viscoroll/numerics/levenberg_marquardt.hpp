@@ -24,14 +24,16 @@ namespace viscoroll::numerics {
 
 /// Levenberg-Marquardt from x, with r = problem(x) on entry; x and r hold the last accepted
 /// iterate on return. Steps solve (J^T J + mu diag(J^T J)) s = -J^T r (Marquardt's scaling, the
-/// column norms floored at 1e-12), mu from 1e-3, times 8 per rejected try (40 tries with a fresh
-/// Jacobian, 4 with an updated one), divided by 4 per accepted step (floor 1e-12); a step is
+/// column norms floored at 1e-12), mu from options.initial_damping (1e-3), times 8 per rejected
+/// try (40 tries with a fresh Jacobian, 4 with an updated one), divided by 4 per accepted step (floor 1e-12); a step is
 /// accepted when r is defined there and |r|^2 falls. Stops:
 /// - converged: max |r| <= root_tolerance after a step below eps^0.6 (1 + max |x|) taken with a
 ///   fresh Jacobian or one refreshed below that tolerance; or max |r| <= 4 eps (rounding level);
 /// - minimum (not converged): no descent step with a fresh Jacobian; |r|^2 down by less than 5%
 ///   over 20 accepted steps; or three steps from a fresh Jacobian each lowering |r|^2 by less
 ///   than sqrt(eps) of itself (MINPACK's ftol test), the residual above tolerance in both;
+/// - stage tolerance (not converged, not a minimum): max |r| <= options.stop_tolerance > 0, at
+///   once, before any test above;
 /// - undefined: the Jacobian could not be evaluated;
 /// - the iteration limit.
 template <class Real, LeastSquaresProblem<Real> Problem>
@@ -46,7 +48,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
   const Real eps = std::numeric_limits<Real>::epsilon();
   const Real step_tol = pow(eps, Real(0.6));
   Real cost = r.squaredNorm();
-  Real mu = Real(1e-3);
+  Real mu = options.initial_damping;
   Matrix jac(problem.equations(), n);
   Vector trial(n), rt(problem.equations());
   LeastSquaresOutcome out{.reason = "iteration limit"};
@@ -62,6 +64,13 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     fresh = true;
     return true;
   };
+  const auto at_stop_tolerance = [&]() {
+    if (!(options.stop_tolerance > 0) || !(r.cwiseAbs().maxCoeff() <= options.stop_tolerance))
+      return false;
+    out.reason = "stage tolerance";
+    return true;
+  };
+  if (at_stop_tolerance()) return out;
   for (; out.iterations < options.max_iterations; ++out.iterations) {
     if (out.iterations == 0 && !refresh_jacobian()) return out.jacobian_undefined();
     bool accepted = false;
@@ -106,6 +115,10 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     r = rt;
     cost = r.squaredNorm();
     mu = std::max(mu / 4, Real(1e-12));
+    if (at_stop_tolerance()) {
+      ++out.iterations;
+      return out;
+    }
     const Real rmax = r.cwiseAbs().maxCoeff();
     // Near the root (residual below tolerance) the Jacobian is refreshed once: the next step is
     // Newton's, which about squares the residual (5.7e-8 to 1.1e-11 in the line equations at
