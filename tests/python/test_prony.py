@@ -112,7 +112,7 @@ def test_the_shipped_prony_scene_agrees_with_the_command_line(scenes_dir, viscor
     # apart, and their roundings differ): the BEM's and the plane's answers agree to rounding; the
     # spectrum's line equations are solved to the iteration's stopping step, eps^0.6 (1 + max|x|)
     # = 4e-10 (1 + max|x|) in the unknowns, and a(0) sums N + 1 = 5 of them: at this scene's root
-    # (l/a(0) near 3, a residual 8e-10 at the stop) the two builds' a(0) differ by 4.7e-9.
+    # (a residual 8e-10 at the stop) the two builds' a(0) differ by 4.7e-9.
     # The iteration's path (its count, its last residual and which stopping test ended it)
     # differs between the builds there: one stops on Levenberg-Marquardt's step test, the other at
     # the residual's floor (docs/line-solver.md).

@@ -970,7 +970,8 @@ class LineSolver {
           last;
       const bool least_squares = minimises();
       const std::vector<int> stages = continuation_stages(options_.terms);
-      for (const int n : stages) {
+      for (std::size_t k = 0; k < stages.size(); ++k) {
+        const int n = stages[k];
         last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop);
         Vector x = last->pack(shape, moments, d);
         r.resize(last->equations());
@@ -980,7 +981,8 @@ class LineSolver {
           out.reason = "initial guess outside the domain";
           break;
         }
-        out = numerics::levenberg_marquardt(*last, x, r, settings);
+        out = numerics::levenberg_marquardt(*last, x, r,
+                                            stage_settings(settings, k, k + 1 == stages.size()));
         iterations += out.iterations;
         // The last stage: where the equations have no root, the least-squares solution.
         if (n == stages.back() && least_squares && !out.converged && !out.undefined)
