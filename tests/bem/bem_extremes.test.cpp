@@ -10,6 +10,9 @@
 #include <string>
 #include <viscoroll/bem/bem_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_extremes {
+
 namespace {
 
 using viscoroll::BemOptions;
@@ -180,3 +183,5 @@ TEST_CASE("bem extremes: the speed options are validated by name", "[bem]") {
   CHECK(b.a0 == Approx(a.a0).epsilon(1e-10));
   CHECK(b.l == Approx(a.l).epsilon(1e-10));
 }
+
+}  // namespace test_bem_extremes

@@ -9,6 +9,9 @@
 #include <cstddef>
 #include <viscoroll/bem/bem_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_final_solve {
+
 namespace {
 
 using viscoroll::BemOptions;
@@ -59,3 +62,5 @@ TEST_CASE("bem: coarse early solves give the tight iteration's result to 1e-10, 
           "[bem][slow]") {
   for (const double speed : {0.1, 1.0, 10.0}) check_coarse_equals_tight(32, speed);
 }
+
+}  // namespace test_bem_final_solve

@@ -12,6 +12,9 @@
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_profile {
+
 namespace {
 
 using viscoroll::BemOptions;
@@ -192,3 +195,5 @@ TEST_CASE("bem profile: invalid input names the parameter", "[bem]") {
   s.y_max = -1.0;
   CHECK_THROWS_WITH(s.validate(), Catch::Contains("y_max"));
 }
+
+}  // namespace test_bem_profile

@@ -12,6 +12,9 @@
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/static_profile_contact.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_profile_static {
+
 namespace {
 
 using viscoroll::CrownedCylinder;
@@ -52,3 +55,5 @@ void check_static_crowned(double flat_length) {
 TEST_CASE("bem profile: the static crowned roller, BEM against the line theory", "[bem]") {
   for (const double flat_length : {0.0, 10.0, 20.0}) check_static_crowned(flat_length);
 }
+
+}  // namespace test_bem_profile_static

@@ -35,6 +35,9 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_property {
+
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -342,3 +345,5 @@ TEST_CASE("bem: a user profile that is not finite at a cell centre is rejected",
   const auto s = solver.solve(scene);
   CHECK(s.converged);
 }
+
+}  // namespace test_bem_property

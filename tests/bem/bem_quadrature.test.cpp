@@ -15,6 +15,9 @@
 #include <viscoroll/quadrature/adaptive.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_quadrature {
+
 namespace {
 
 using viscoroll::GaussLegendre;
@@ -79,3 +82,5 @@ TEST_CASE("bem: a BemSolver over a 24-point panel rule solves as the default", "
   for (std::size_t q = 0; q < ref.pressure.size(); ++q)
     CHECK(std::abs(sol.pressure[q] - ref.pressure[q]) <= 1e-10 * largest);
 }
+
+}  // namespace test_bem_quadrature

@@ -15,6 +15,9 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_solver {
+
 namespace {
 
 using viscoroll::BemOptions;
@@ -294,3 +297,5 @@ TEST_CASE("bem: a glassy memory term is dropped, also when V tau overflows to +i
   CHECK(std::abs(infinite.d - fast.d) / fast.d <= ha * ha / 5);
   CHECK(std::abs(infinite.chi) <= 1e-9);
 }
+
+}  // namespace test_bem_solver

@@ -9,6 +9,9 @@
 #include <limits>
 #include <viscoroll/bem/hertz.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_hertz {
+
 using viscoroll::hertz_contact;
 using viscoroll::hertz_curvature_ratio;
 
@@ -80,3 +83,5 @@ TEST_CASE("bem: Hertz pressure gives S = d - h inside the ellipse (B8a)", "[bem]
     CHECK(u == Approx(h.d - c1 * x * x / 2 - c2 * y * y / 2).epsilon(1e-9));
   }
 }
+
+}  // namespace test_hertz

@@ -12,6 +12,9 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_influence_operator {
+
 using viscoroll::BemGrid;
 using viscoroll::GeneralizedMaxwell;
 using viscoroll::PronyTerm;
@@ -121,3 +124,5 @@ TEST_CASE("bem: operators of several grids applied on several threads", "[bem]")
   }
   for (std::size_t k = 0; k < grids.size(); ++k) CHECK(parallel[k] == serial[k]);
 }
+
+}  // namespace test_influence_operator

@@ -9,6 +9,9 @@
 #include <viscoroll/bem/influence_operator.hpp>
 #include <viscoroll/bem/rectangle_influence.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_memory_rows {
+
 using viscoroll::PronyTerm;
 using viscoroll::bem::InfluenceTable;
 using viscoroll::bem::memory_row;
@@ -95,3 +98,5 @@ TEST_CASE("bem: the row |Y| = hy/2 through the cells' corners is graded as its n
   CHECK(viscoroll::bem::kink_grading_depth(hy / 2 + hx / 4, hx, hy) == 4);
   CHECK(viscoroll::bem::kink_grading_depth(hy / 2 + hx, hx, hy) == 0);
 }
+
+}  // namespace test_memory_rows

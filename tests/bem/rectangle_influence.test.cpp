@@ -10,6 +10,9 @@
 #include <vector>
 #include <viscoroll/bem/rectangle_influence.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_rectangle_influence {
+
 namespace {
 
 using viscoroll::bem::memory_row;
@@ -194,3 +197,5 @@ TEST_CASE("bem: the far field's rule selection equals the point count formula", 
     CHECK(viscoroll::detail::gauss_rule_for<double>(q) == want);
   }
 }
+
+}  // namespace test_rectangle_influence

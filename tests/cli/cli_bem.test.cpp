@@ -8,6 +8,9 @@
 
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_bem {
+
 namespace {
 
 /// Runs viscoroll-solve with `args`, words separated by spaces.
@@ -182,3 +185,5 @@ TEST_CASE("cli: --threads builds the bem method's influence tables too, the same
     }
   }
 }
+
+}  // namespace test_cli_bem

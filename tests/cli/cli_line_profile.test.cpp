@@ -18,6 +18,9 @@
 #include "cli/scene_file.hpp"
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_line_profile {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -193,3 +196,5 @@ TEST_CASE(
     CHECK(!fs::exists(csv));
   }
 }
+
+}  // namespace test_cli_line_profile

@@ -9,6 +9,9 @@
 
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_malformed {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -151,3 +154,5 @@ TEST_CASE("cli: malformed scene files exit 2 naming the key, nothing on stdout",
     CHECK(r.err.starts_with("viscoroll-solve: "));
   }
 }
+
+}  // namespace test_cli_malformed

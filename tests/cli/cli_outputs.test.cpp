@@ -10,6 +10,9 @@
 
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_outputs {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -212,3 +215,5 @@ TEST_CASE("cli: the line method's quadrature tolerance", "[cli][line]") {
   }
   CHECK(differs);
 }
+
+}  // namespace test_cli_outputs

@@ -9,6 +9,9 @@
 
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_plane_extremes {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -88,3 +91,5 @@ TEST_CASE("cli: V tau beyond a double is null and the rest of the line finite, e
     CHECK(line["a0"].get<double>() > 0);
   }
 }
+
+}  // namespace test_cli_plane_extremes

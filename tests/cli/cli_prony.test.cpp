@@ -17,6 +17,9 @@
 
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_prony {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -479,3 +482,5 @@ TEST_CASE("cli prony: malformed prony keys, temperatures and methods exit 2 nami
   CHECK(r.out.empty());
   CHECK(r.err.find("--temperature is valid only with --scene") != std::string::npos);
 }
+
+}  // namespace test_cli_prony

@@ -32,6 +32,9 @@
 
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_property {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -218,3 +221,5 @@ TEST_CASE("cli property: 2000 random extreme line scenes", "[cli][property][slow
 TEST_CASE("cli property: 2000 random extreme bem scenes", "[cli][property][slow]") {
   property("bem", 2000);
 }
+
+}  // namespace test_cli_property

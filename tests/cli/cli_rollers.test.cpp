@@ -13,6 +13,9 @@
 #include "cli/scene_file.hpp"
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_rollers {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -117,3 +120,5 @@ TEST_CASE("cli rollers: plane, a misplaced --profile-out and bad profiles are er
   };
   for (const auto& c : cases) check_refused(c.args, c.message);
 }
+
+}  // namespace test_cli_rollers

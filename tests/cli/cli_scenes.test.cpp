@@ -8,6 +8,9 @@
 #include "cli/scene_file.hpp"
 #include "cli_run.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_scenes {
+
 namespace {
 
 using namespace viscoroll::cli_test;
@@ -206,3 +209,5 @@ TEST_CASE("cli: a run that fails prints nothing on stdout; one that prints, stan
     CHECK(!r.err.empty());
   }
 }
+
+}  // namespace test_cli_scenes

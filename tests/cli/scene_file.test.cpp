@@ -9,6 +9,9 @@
 #include <string>
 #include <variant>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_scene_file {
+
 namespace {
 
 using namespace viscoroll::cli;
@@ -183,3 +186,5 @@ TEST_CASE("cli scene file: the shipped scenes parse", "[cli][scene]") {
   CHECK_THROWS_WITH(read_scene_file(dir.string()), Catch::Contains("is a directory"));
   CHECK_THROWS_WITH(read_scene_file((dir / "none.json").string()), Catch::Contains("no such file"));
 }
+
+}  // namespace test_scene_file

@@ -28,6 +28,9 @@
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_leading_edge_condition {
+
 namespace {
 
 using viscoroll::LineOperators;
@@ -259,3 +262,5 @@ TEST_CASE("line: (42) against quadrature of (38) in long double", "[line][slow]"
   INFO(std::setprecision(20) << "quad " << r.quad << " (42) " << r.eq42 << " scale " << r.scale42);
   CHECK(std::abs(r.quad - r.eq42) <= 100 * eps * r.scale42);
 }
+
+}  // namespace test_leading_edge_condition

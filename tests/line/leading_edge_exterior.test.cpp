@@ -9,6 +9,9 @@
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_leading_edge_exterior {
+
 namespace {
 
 using viscoroll::GaussLegendre;
@@ -136,3 +139,5 @@ TEST_CASE("line: (L6) limits at y = 0", "[line]") {
     CHECK(previous < 1e-4);  // measured 2e-5 at V = 1e6
   }
 }
+
+}  // namespace test_leading_edge_exterior

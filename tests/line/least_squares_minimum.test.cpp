@@ -22,6 +22,9 @@
 
 #include "support/paper_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_least_squares_minimum {
+
 namespace {
 
 using viscoroll::LineOptions;
@@ -129,3 +132,5 @@ TEST_CASE("line least squares: a scene with a root is not touched", "[line]") {
     CHECK(with.d == without.d);
   }
 }
+
+}  // namespace test_line_least_squares_minimum

@@ -8,6 +8,9 @@
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/line/line_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_along_roller {
+
 namespace {
 
 // The paper's scene: f = 9, C2/C1 = (ln 20 - 1)/25, (1 + f) c P = 5/3 (a0 = 1, l0 = 5).
@@ -69,3 +72,5 @@ TEST_CASE("line along the roller: the BEM's rows within the line theory's error"
   // l: measured 3.7% at N = 16, 2.1% at N = 32 (docs/validation.md).
   CHECK(l.y_plus == Approx(bem.l).epsilon(0.045));
 }
+
+}  // namespace test_line_along_roller

@@ -12,6 +12,9 @@
 
 #include "support/paper_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_bounds {
+
 namespace {
 
 bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
@@ -131,3 +134,5 @@ TEST_CASE("line bounds: the 10,000-speed sweep of issue 24 converges at the defa
   }
   CHECK(failed == 0);
 }
+
+}  // namespace test_line_bounds

@@ -11,6 +11,9 @@
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_conditioning {
+
 namespace {
 
 using viscoroll::LineBasis;
@@ -143,3 +146,5 @@ TEMPLATE_TEST_CASE("line solver: self-convergence to 1e-6 at V tau = a0 in the v
     CHECK(last <= first);
   }
 }
+
+}  // namespace test_line_conditioning

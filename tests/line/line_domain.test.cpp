@@ -6,6 +6,9 @@
 #include <string>
 #include <viscoroll/line/line_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_domain {
+
 namespace {
 bool mentions(const std::vector<std::string>& warnings, const char* text) {
   return std::any_of(warnings.begin(), warnings.end(),
@@ -43,3 +46,5 @@ TEST_CASE("line domain: a(y) larger off the centre than l/3 is flagged", "[line]
   CHECK(2.5 / a0 >= 3);
   CHECK(viscoroll::line_domain_warnings(LineShape<double>{1.0, 2.5, {0.0, 1.0}, {0.0}}).empty());
 }
+
+}  // namespace test_line_domain

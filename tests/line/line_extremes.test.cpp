@@ -11,6 +11,9 @@
 #include <stdexcept>
 #include <viscoroll/line/line_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_extremes {
+
 namespace {
 
 using viscoroll::LineScene;
@@ -172,3 +175,5 @@ TEST_CASE("line extremes: random scenes over the range of double end in a finite
   CHECK(rolling >= 10);
   CHECK(rejected >= 1);
 }
+
+}  // namespace test_line_extremes

@@ -12,6 +12,9 @@
 
 #include "support/paper_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_fast_setting {
+
 TEST_CASE("line fast setting: within 1% of the converged solution", "[line]") {
   const viscoroll::testing::PaperScene paper;
   const viscoroll::LineSolverD solver(paper.material, viscoroll::LineOptions::fast());
@@ -65,3 +68,5 @@ TEST_CASE("line fast setting: the quadrature tolerance and its range", "[line]")
   bad.quadrature_tolerance = -1;
   CHECK_THROWS_AS(viscoroll::LineSolverD(paper.material, bad), std::invalid_argument);
 }
+
+}  // namespace test_line_fast_setting

@@ -7,6 +7,9 @@
 #include <string>
 #include <viscoroll/line/line_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_float {
+
 namespace {
 
 template <class Real>
@@ -43,3 +46,5 @@ TEST_CASE("line float: a root beyond what float carries is not reported converge
   CHECK(std::abs(f1.b(0.0f) - d1.b(0.0)) <= 1e-5);
   CHECK(std::abs(f1.l() - d1.l()) <= 1e-5 * d1.l());
 }
+
+}  // namespace test_line_float

@@ -17,6 +17,9 @@
 
 #include "support/jacobian_check.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_jacobian {
+
 namespace {
 
 using viscoroll::LineJacobian;
@@ -136,3 +139,5 @@ TEST_CASE("line: the paper's (44) closes the same equations with another leading
     CHECK(std::abs(r44[m + i]) <= 1e-1);
   }
 }
+
+}  // namespace test_line_jacobian

@@ -16,6 +16,9 @@
 #include <viscoroll/line/paper_leading_edge.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_operators {
+
 namespace {
 
 using viscoroll::LineOperators;
@@ -381,3 +384,5 @@ TEST_CASE("line: operators reject arguments outside their domain", "[line]") {
   const PaperLeadingEdgeOperators<double, viscoroll::GaussLegendre<double, 16>> paper(1.0);
   CHECK_THROWS_AS(paper.kernel(one, -1.0, 0.0), std::invalid_argument);
 }
+
+}  // namespace test_line_operators

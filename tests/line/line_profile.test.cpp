@@ -10,6 +10,9 @@
 #include <string>
 #include <viscoroll/line/line_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_profile {
+
 namespace {
 
 using viscoroll::CrownedCylinder;
@@ -134,3 +137,5 @@ TEST_CASE("line profile: invalid scenes name the parameter", "[line][errors]") {
   CHECK(tilted.find("roller") != std::string::npos);
   CHECK(tilted.find("symmetric") != std::string::npos);
 }
+
+}  // namespace test_line_profile

@@ -13,6 +13,9 @@
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/material/prony.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_profile_bem {
+
 namespace {
 
 using Crowned = viscoroll::CrownedCylinder<double>;
@@ -70,3 +73,5 @@ TEST_CASE("line profile: a crowned roller on a two-term spectrum against the BEM
   };
   for (const double speed : {0.1, 1.0, 10.0}) check_against_bem(material, 0.03 / c, speed, 12, f0);
 }
+
+}  // namespace test_line_profile_bem

@@ -7,6 +7,9 @@
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_profile_flat {
+
 TEST_CASE("line profile: the middle of a long flat part is the plane solution", "[line]") {
   using Material = viscoroll::StandardLinearSolid<double>;
   const Material material(1.0, 0.5, 2.0, 1.0);
@@ -34,3 +37,5 @@ TEST_CASE("line profile: the middle of a long flat part is the plane solution", 
     }
   }
 }
+
+}  // namespace test_line_profile_flat

@@ -31,6 +31,9 @@
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/quadrature/adaptive.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_property {
+
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -277,3 +280,5 @@ TEST_CASE("line: many random scenes end in a valid solution, a reported failure 
   CHECK(tally.solved > count / 4);
   CHECK(tally.rejected > count / 4);
 }
+
+}  // namespace test_line_property

@@ -13,6 +13,9 @@
 #include "support/paper_scene.hpp"
 #include "support/same_line_solution.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_seed {
+
 namespace {
 
 using viscoroll::testing::require_same_solution;
@@ -129,3 +132,5 @@ TEST_CASE("line solver: one answer per scene whatever the seed (issue 24)", "[li
   require_same_solution(from_nan, cold);
   REQUIRE(mentions(from_nan.warnings, "the seed was set aside"));
 }
+
+}  // namespace test_line_seed

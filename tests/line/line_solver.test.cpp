@@ -27,6 +27,9 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_solver {
+
 namespace {
 
 using viscoroll::GaussLegendre;
@@ -633,3 +636,5 @@ TEMPLATE_TEST_CASE("line solver: float, double and long double agree", "[line]",
     CHECK(rel<long double>(s.chi, ref.chi) <= tol);
   }
 }
+
+}  // namespace test_line_solver

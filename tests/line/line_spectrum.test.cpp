@@ -15,6 +15,9 @@
 
 #include "support/spectrum_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_spectrum {
+
 namespace {
 
 using viscoroll::LineOptions;
@@ -185,3 +188,5 @@ TEST_CASE("line spectrum: agrees with the BEM within the line theory's error", "
     CHECK(rel(s.b(0), e.b0) <= 7e-2);
   }
 }
+
+}  // namespace test_line_spectrum

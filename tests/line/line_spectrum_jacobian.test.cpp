@@ -21,6 +21,9 @@
 
 #include "support/jacobian_check.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_spectrum_jacobian {
+
 namespace {
 
 using Residual = viscoroll::LineSpectrumResidual<double, viscoroll::GaussLegendre<double, 12>>;
@@ -162,3 +165,5 @@ TEST_CASE("line spectrum: the shared memory grid against exterior_right term by 
     CHECK(std::abs(slopes[k].ends - ref.ends) <= 16 * 2.2e-16 * (1 + std::abs(ref.ends)));
   }
 }
+
+}  // namespace test_line_spectrum_jacobian

@@ -9,6 +9,9 @@
 
 #include "support/spectrum_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_spectrum_minimum {
+
 namespace {
 
 using viscoroll::testing::spectrum_scene;
@@ -45,3 +48,5 @@ TEST_CASE("line spectrum: a certified least-squares minimum where the equations 
   CHECK_FALSE(stop.converged);
   CHECK_FALSE(stop.root);
 }
+
+}  // namespace test_line_spectrum_minimum

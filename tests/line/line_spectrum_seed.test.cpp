@@ -16,6 +16,9 @@
 
 #include "support/spectrum_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_spectrum_seed {
+
 namespace {
 
 using viscoroll::testing::spectrum_scene;
@@ -128,3 +131,5 @@ TEST_CASE("line spectrum: where the cold start stops short the seed is tried, an
   CHECK(both.l() == cold.l());
   CHECK(both.iterations > cold.iterations);
 }
+
+}  // namespace test_line_spectrum_seed

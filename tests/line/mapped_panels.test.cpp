@@ -14,6 +14,9 @@
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_mapped_panels {
+
 namespace {
 
 using viscoroll::GaussLegendre;
@@ -200,3 +203,5 @@ TEST_CASE("line: the residual's integrals are exact to rounding", "[line][quadra
     CHECK(eld < tol);
   }
 }
+
+}  // namespace test_mapped_panels

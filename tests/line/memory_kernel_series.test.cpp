@@ -9,6 +9,9 @@
 #include <limits>
 #include <viscoroll/line/detail/memory_kernel_series.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_memory_kernel_series {
+
 namespace {
 
 using viscoroll::detail::MemoryKernelSeries;
@@ -114,3 +117,5 @@ TEST_CASE("memory kernel series: where it applies", "[line]") {
   CHECK(std::isinf(fast.threshold()));
   CHECK(std::isfinite(MemoryKernelSeries<float>(0.5f, 0.01f).threshold()));
 }
+
+}  // namespace test_memory_kernel_series

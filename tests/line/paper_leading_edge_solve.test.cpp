@@ -11,6 +11,9 @@
 #include <viscoroll/line/paper_leading_edge.hpp>
 #include <viscoroll/numerics/levenberg_marquardt.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_paper_leading_edge_solve {
+
 namespace {
 using viscoroll::StandardLinearSolid;
 using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1>;
@@ -73,3 +76,5 @@ TEST_CASE("line: the paper's (44) has no root near the physical solution at V ta
   CHECK_FALSE(c.converged);
   CHECK(c.residual > 1e-3);
 }
+
+}  // namespace test_paper_leading_edge_solve

@@ -19,6 +19,9 @@
 
 #include "support/paper_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_slow_regime {
+
 namespace {
 
 using viscoroll::LineBasis;
@@ -155,3 +158,5 @@ TEST_CASE("line solver: oversampling is validated", "[line]") {
     }
   }
 }
+
+}  // namespace test_slow_regime

@@ -8,6 +8,9 @@
 #include <viscoroll/line/static_profile_contact.hpp>
 #include <viscoroll/roller/profile.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_static_profile_contact {
+
 using namespace viscoroll;
 
 namespace {
@@ -148,3 +151,5 @@ TEST_CASE("static profile contact: logarithmic crown, body ends and bad input") 
   CHECK_THROWS_WITH(static_profile_contact(ell, 0.3, 0), Catch::Contains("terms"));
   CHECK_THROWS_AS(static_profile_contact(ell, std::nan("")), std::invalid_argument);
 }
+
+}  // namespace test_static_profile_contact

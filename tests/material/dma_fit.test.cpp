@@ -8,6 +8,9 @@
 #include <vector>
 #include <viscoroll/material/dma_fit.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_dma_fit {
+
 namespace {
 
 const std::filesystem::path data_dir =
@@ -178,3 +181,5 @@ TEST_CASE("dma: a poor fit is reported, not hidden; no rubbery plateau is an err
   CHECK_THROWS_WITH(viscoroll::fit_prony(fluid, viscoroll::DmaFitOptions<double>{}),
                     Catch::Contains("g_inf = 0") && Catch::Contains("no rubbery plateau"));
 }
+
+}  // namespace test_dma_fit

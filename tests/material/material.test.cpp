@@ -4,6 +4,9 @@
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_material {
+
 using viscoroll::Elastic;
 using viscoroll::StandardLinearSolid;
 
@@ -54,3 +57,5 @@ TEMPLATE_TEST_CASE("the spectrum each single-time material gives the solvers", "
   CHECK(none.f == T(0));
   CHECK(none.tau == T(0));
 }
+
+}  // namespace test_material

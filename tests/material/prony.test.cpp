@@ -9,6 +9,9 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/material/prony.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_prony {
+
 using viscoroll::PronyCreep;
 using viscoroll::PronyRelaxation;
 using viscoroll::PronyTerm;
@@ -206,3 +209,5 @@ TEST_CASE("prony: invalid parameters are named", "[material][prony][validation]"
   CHECK(r.glassy_modulus() == Approx(2.0).epsilon(1e-15));
   CHECK(r.g_inf() == Approx(3.0 / 2.5).epsilon(1e-15));
 }
+
+}  // namespace test_prony

@@ -4,6 +4,9 @@
 #include <viscoroll/bem/influence_operator.hpp>
 #include <viscoroll/material/prony.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_prony_bem {
+
 static_assert(viscoroll::ConstitutiveModel<viscoroll::PronyRelaxation<double>>);
 static_assert(viscoroll::ConstitutiveModel<viscoroll::PronyCreep<double>>);
 
@@ -27,3 +30,5 @@ TEST_CASE(
   for (int i = -4; i <= 4; ++i)
     for (int j = 0; j < 3; ++j) CHECK(tb(i, j) == Approx(ta(i, j)).epsilon(1e-14));
 }
+
+}  // namespace test_prony_bem

@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <viscoroll/material/temperature_shift.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_temperature_shift {
+
 using viscoroll::ArrheniusShift;
 using viscoroll::WlfShift;
 
@@ -81,3 +84,5 @@ TEST_CASE("temperature: the singular WLF temperature and invalid constants are r
   CHECK_THROWS_WITH(WlfShift<double>(1e3, 51.6, 20.0).factor(-31.0),
                     Catch::Contains("temperature"));
 }
+
+}  // namespace test_temperature_shift

@@ -8,6 +8,9 @@
 
 #include "optional_parts_probe.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_header {
+
 static_assert(viscoroll_needs::bem_declared);
 static_assert(viscoroll_needs::eigen_fft_included);
 static_assert(viscoroll_needs::multiprecision_included);
@@ -18,3 +21,5 @@ TEST_CASE("needs: the probes see the BEM, the FFT and multiprecision when they a
   CHECK(viscoroll_needs::eigen_fft_included);
   CHECK(viscoroll_needs::multiprecision_included);
 }
+
+}  // namespace test_bem_header

@@ -13,6 +13,9 @@
 #include <string>
 #include <viscoroll/viscoroll.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_closed_forms {
+
 namespace {
 
 template <class Real>
@@ -199,3 +202,5 @@ TEMPLATE_TEST_CASE("needs: elastic, static and glassy line scenes are Kalker's s
     }
   }
 }
+
+}  // namespace test_closed_forms

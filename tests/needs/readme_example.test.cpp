@@ -7,6 +7,9 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/viscoroll.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_readme_example {
+
 TEST_CASE("readme: the example solves its scene", "[needs][line]") {
   // mu_D = 1 MPa, nu = 0.5, f = 9, tau = 10 ms; C1 = 1/R = 100/m, C2/C1 of a 5:1 contact; 10 N at 1 m/s
   const viscoroll::LineSolverD solver(viscoroll::StandardLinearSolid<double>(1e6, 0.5, 9.0, 0.01));
@@ -41,3 +44,5 @@ TEST_CASE("readme: the solver family's declarations", "[needs][bem]") {
   CHECK(b.converged);
   CHECK(b.chi > 0);
 }
+
+}  // namespace test_readme_example

@@ -11,6 +11,9 @@
 #include <viscoroll/quadrature/adaptive.hpp>
 #include <viscoroll/viscoroll.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_solver_family {
+
 namespace {
 using viscoroll::AdaptiveGaussKronrod;
 using viscoroll::Elastic;
@@ -97,3 +100,5 @@ TEST_CASE("solver family: a line solver over 16-point panels agrees with the def
   CHECK(std::abs(g16.d - ref.d) <= 1e-6 * std::abs(ref.d));
   CHECK(std::abs(g16.chi - ref.chi) <= 1e-6 * ref.chi);
 }
+
+}  // namespace test_solver_family

@@ -9,6 +9,9 @@
 
 #include "optional_parts_probe.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_umbrella_header {
+
 static_assert(!viscoroll_needs::bem_declared, "viscoroll.hpp declares the BEM solver");
 static_assert(!viscoroll_needs::eigen_fft_included,
               "viscoroll.hpp includes <unsupported/Eigen/FFT>");
@@ -22,3 +25,5 @@ TEST_CASE("needs: the umbrella header leaves out the BEM, the FFT and multipreci
   // The probe names the fallback, which the umbrella header's solvers do not disturb.
   CHECK(viscoroll::bem::InfluenceTable<double>::fallback);
 }
+
+}  // namespace test_umbrella_header

@@ -11,6 +11,9 @@
 #include <vector>
 #include <viscoroll/numerics/active_set.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_active_set {
+
 namespace {
 
 using Matrix = Eigen::MatrixXd;
@@ -217,3 +220,5 @@ TEST_CASE("numerics: active set reports cycling, the iteration limit and an empt
   CHECK(none.reason == "empty contact set");
   CHECK(none.iterations == 0);
 }
+
+}  // namespace test_active_set

@@ -8,6 +8,9 @@
 #include <random>
 #include <viscoroll/numerics/gmres.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_gmres {
+
 namespace {
 
 using Matrix = Eigen::MatrixXd;
@@ -89,3 +92,5 @@ TEST_CASE("numerics: GMRES reports its iteration limit", "[numerics]") {
   CHECK(report.relative_residual > 1e-12);
   CHECK(report.relative_residual < 1);  // but six steps did reduce it
 }
+
+}  // namespace test_gmres

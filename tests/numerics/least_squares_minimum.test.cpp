@@ -13,6 +13,9 @@
 
 #include "numerics/least_squares_problems.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_numerics_least_squares_minimum {
+
 namespace {
 
 using namespace viscoroll::numerics;
@@ -81,3 +84,5 @@ TEST_CASE("numerics: least-squares minimum reports a missing Jacobian and its li
   REQUIRE(out.iterations == 1);
   REQUIRE(r.squaredNorm() / 2 < start_phi);
 }
+
+}  // namespace test_numerics_least_squares_minimum

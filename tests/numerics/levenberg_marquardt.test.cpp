@@ -11,6 +11,9 @@
 
 #include "numerics/least_squares_problems.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_levenberg_marquardt {
+
 namespace {
 
 using namespace viscoroll::numerics;
@@ -130,3 +133,5 @@ TEST_CASE("numerics: Levenberg-Marquardt's stop tolerance and starting damping",
     REQUIRE(std::abs(y[0] - (0.45 + 0.045 / (1 + damping))) <= 8 * eps);
   }
 }
+
+}  // namespace test_levenberg_marquardt

@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_hunter_collocation {
+
 using viscoroll::testing::hunter_reference;
 using viscoroll::testing::HunterReference;
 namespace hd = viscoroll::testing::hunter_detail;
@@ -438,3 +441,5 @@ TEST_CASE("Hunter reference rejects bad input", "[plane][reference]") {
       hunter_reference<double>(1.0, 1.0, std::numeric_limits<double>::infinity(), 1.0, 1.0, 8),
       std::invalid_argument);
 }
+
+}  // namespace test_hunter_collocation

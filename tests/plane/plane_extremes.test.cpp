@@ -10,6 +10,9 @@
 #include <string>
 #include <viscoroll/plane/plane_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_extremes {
+
 namespace {
 
 using viscoroll::PlaneScene;
@@ -214,3 +217,5 @@ TEST_CASE("plane extremes: float reproductions", "[plane][extremes]") {
                     Catch::Contains("a0 = sqrt(4 c (1+f) load/c1)") &&
                         Catch::Contains("beyond the largest finite number 3.4e+38"));
 }
+
+}  // namespace test_plane_extremes

@@ -6,6 +6,9 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_multiprecision {
+
 TEST_CASE("plane: multiprecision solution", "[plane][multiprecision]") {
   using mp = boost::multiprecision::cpp_bin_float_50;
   using viscoroll::StandardLinearSolid;
@@ -33,3 +36,5 @@ TEST_CASE("plane: multiprecision solution", "[plane][multiprecision]") {
   const mp x = s.b + s.a / 3;
   CHECK(abs(s.pressure(x) - mp(r.pressure(static_cast<long double>(x)))) <= 32 * eps_ld * W);  // panel sums: measured 1.5 ulps of W
 }
+
+}  // namespace test_plane_multiprecision

@@ -10,6 +10,9 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_property {
+
 TEST_CASE("plane: random scenes end in a valid solution or a clear error", "[plane][property]") {
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -65,3 +68,5 @@ TEST_CASE("plane: random scenes end in a valid solution or a clear error", "[pla
   CHECK(solved > 4000);
   CHECK(rejected > 2000);
 }
+
+}  // namespace test_plane_property

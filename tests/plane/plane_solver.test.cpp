@@ -9,6 +9,9 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/adaptive.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_solver {
+
 namespace {
 
 using viscoroll::PlaneScene;
@@ -232,3 +235,5 @@ TEMPLATE_TEST_CASE("plane: extreme speeds and creep ratios", "[plane][stiff]", f
       CHECK(std::abs(moment(s, 0, tol) - W) <= (tol + 4096 * eps<Real>()) * W);
     }
 }
+
+}  // namespace test_plane_solver

@@ -13,6 +13,9 @@
 
 #include "support/hunter_collocation.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_spectrum {
+
 using viscoroll::PlaneScene;
 using viscoroll::PlaneSolver;
 using viscoroll::PronyCreep;
@@ -147,3 +150,5 @@ TEST_CASE("plane spectrum: agrees with the independent collocation, twenty terms
   const PronyCreep<double> m(1.0, 0.5, terms);
   for (double speed : {0.3, 3.0}) check_against_collocation(m, speed, 200);
 }
+
+}  // namespace test_plane_spectrum

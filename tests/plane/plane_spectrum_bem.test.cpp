@@ -9,6 +9,9 @@
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_spectrum_bem {
+
 namespace {
 
 using viscoroll::PronyCreep;
@@ -54,3 +57,5 @@ TEST_CASE("plane spectrum: a very long BEM roller at y = 0, twenty terms",
   const PronyCreep<double> m(1.0, 0.5, terms);
   for (double speed : {0.03, 3.0, 30.0}) check_long_roller(m, speed);
 }
+
+}  // namespace test_plane_spectrum_bem

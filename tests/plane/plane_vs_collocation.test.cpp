@@ -7,6 +7,9 @@
 
 #include "support/hunter_collocation.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_vs_collocation {
+
 namespace {
 
 /// Chebyshev terms for the reference: the leading-edge layer of relative width v/(1+f) needs
@@ -39,3 +42,5 @@ TEST_CASE("plane: agrees with the independent collocation of Hunter's Eq. (2)", 
         CHECK(std::abs(s.pressure(x) - ref.pressure(x)) <= 1e-8 * ref.pmax);
     }
 }
+
+}  // namespace test_plane_vs_collocation

@@ -8,6 +8,9 @@
 #include <viscoroll/core/errors.hpp>
 #include <viscoroll/quadrature/adaptive.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_adaptive {
+
 using viscoroll::AdaptiveGaussKronrod;
 using Mp50 = boost::multiprecision::cpp_bin_float_50;
 
@@ -104,3 +107,5 @@ TEST_CASE("adaptive Gauss-Kronrod in cpp_bin_float_50", "[quadrature][multipreci
   // eps.
   CHECK(abs(integral - exact) <= 16 * std::numeric_limits<Mp50>::epsilon() * exact);
 }
+
+}  // namespace test_adaptive

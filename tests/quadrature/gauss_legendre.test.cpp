@@ -6,6 +6,9 @@
 #include <limits>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_gauss_legendre {
+
 using viscoroll::GaussLegendre;
 using Mp50 = boost::multiprecision::cpp_bin_float_50;
 
@@ -190,3 +193,5 @@ TEMPLATE_TEST_CASE("Gauss-Legendre integrates over reversed, empty and general i
   CHECK(Rule::integrate(f, T(0.5), T(0.5)) == 0);
   CHECK(abs(Rule::integrate([](T) { return T(3); }, T(-2), T(5)) - 21) <= T(2 * 16 + 2) * eps * 21);
 }
+
+}  // namespace test_gauss_legendre

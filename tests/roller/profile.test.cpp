@@ -9,6 +9,9 @@
 #include <vector>
 #include <viscoroll/roller/profile.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_profile {
+
 using viscoroll::CrownedCylinder;
 using viscoroll::EllipsoidProfile;
 using viscoroll::LogarithmicCrown;
@@ -147,3 +150,5 @@ TEST_CASE("profile: bad parameters are errors naming them", "[profile]") {
              Catch::Contains("tilt"));
   CHECK_THAT(message([] { EllipsoidProfile<double>(1, 0); }), Catch::Contains("c2"));
 }
+
+}  // namespace test_profile

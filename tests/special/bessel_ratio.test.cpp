@@ -14,6 +14,9 @@
 #include <vector>
 #include <viscoroll/special/bessel_ratio.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bessel_ratio {
+
 namespace {
 
 using viscoroll::special::bessel_i0_scaled;
@@ -370,3 +373,5 @@ TEST_CASE("bessel_i1_over_i0_fast: the ratio's series in 1/x, its coefficients a
     }
   }
 }
+
+}  // namespace test_bessel_ratio

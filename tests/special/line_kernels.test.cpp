@@ -14,6 +14,9 @@
 #include <type_traits>
 #include <viscoroll/special/line_kernels.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_kernels {
+
 namespace {
 
 using viscoroll::special::line_kernel_kappa;
@@ -374,3 +377,5 @@ TEMPLATE_TEST_CASE("line kernels: z must be positive", "[special][line]", float,
   }
   CHECK_THROWS_WITH(line_kernel_kappa(Real(-2)), Catch::Contains("z") && Catch::Contains("z > 0"));
 }
+
+}  // namespace test_line_kernels

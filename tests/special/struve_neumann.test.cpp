@@ -10,6 +10,9 @@
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/struve_neumann.hpp>
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_struve_neumann {
+
 namespace {
 
 using viscoroll::special::struve_h0_minus_y0;
@@ -212,3 +215,5 @@ TEMPLATE_TEST_CASE("H0 - Y0 has the right limits and never overflows", "[special
                       Catch::Contains("struve_h0_minus_y0") && Catch::Contains("x > 0"));
   }
 }
+
+}  // namespace test_struve_neumann

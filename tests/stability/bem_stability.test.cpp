@@ -22,6 +22,9 @@
 
 #include "stability_support.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_bem_stability {
+
 namespace {
 
 using stability::eps;
@@ -239,3 +242,5 @@ TEMPLATE_TEST_CASE("stability: BEM in float and long double agrees with double",
            ")");
   }
 }
+
+}  // namespace test_bem_stability

@@ -5,6 +5,9 @@
 
 #include "line_stability_support.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_stability {
+
 TEMPLATE_TEST_CASE("stability: line solver closed forms over l0/a0 x f x speed",
                    "[stability][line]", float, double, long double) {
   closed_form_matrix<TestType>();
@@ -38,3 +41,5 @@ TEST_CASE("stability: line solver in float and long double", "[stability][line][
     }
   }
 }
+
+}  // namespace test_line_stability

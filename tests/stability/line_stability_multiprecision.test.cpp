@@ -5,6 +5,9 @@
 
 #include "line_stability_support.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_line_stability_multiprecision {
+
 TEST_CASE("stability: line solver closed forms in cpp_bin_float_50",
           "[stability][line][multiprecision]") {
   using mp = boost::multiprecision::cpp_bin_float_50;
@@ -51,3 +54,5 @@ TEST_CASE("stability: line solver, one iterated cell in cpp_bin_float_50",
   report("line cpp_bin_float_50 " + cell.name() + " terms 2: residual " + str(s.residual) +
          ", iterations " + std::to_string(s.iterations));
 }
+
+}  // namespace test_line_stability_multiprecision

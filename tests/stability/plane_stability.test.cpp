@@ -23,6 +23,9 @@
 
 #include "stability_support.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_plane_stability {
+
 namespace {
 
 using stability::eps;
@@ -243,3 +246,5 @@ TEST_CASE("stability: plane solver in cpp_bin_float_50", "[stability][plane][mul
       check_cell<mp, GaussLegendre<mp, 48>>({exact<mp>(t.v), exact<mp>(t.f)}, &t, false);
   check_cell<mp, GaussLegendre<mp, 48>>({mp(1), mp(0)}, nullptr, false);
 }
+
+}  // namespace test_plane_stability

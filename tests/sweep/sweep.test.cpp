@@ -13,6 +13,9 @@
 #include "support/paper_scene.hpp"
 #include "support/same_line_solution.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_sweep {
+
 namespace {
 
 using viscoroll::testing::require_same_solution;
@@ -110,3 +113,5 @@ TEST_CASE("sweep: options name the setting and its range", "[sweep]") {
   REQUIRE(viscoroll::sweep(solver, viscoroll::PlaneScene<double>{1, 1, 0}, std::vector<double>{})
               .empty());
 }
+
+}  // namespace test_sweep

@@ -19,6 +19,9 @@
 
 #include "support/paper_scene.hpp"
 
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_sweep_fast_seeded {
+
 namespace {
 
 void require_same_root(const viscoroll::LineSolverD::Solution& x,
@@ -51,3 +54,5 @@ TEST_CASE("sweep: fast() continuation gives the cold solves' roots", "[sweep]") 
     require_same_root(swept[i], solver.solve(paper.scene(speeds[i])));
   }
 }
+
+}  // namespace test_sweep_fast_seeded
