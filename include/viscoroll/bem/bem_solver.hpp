@@ -33,6 +33,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/material/generalized_maxwell.hpp>
+#include <viscoroll/material/prony.hpp>  // compiled mode: PronyRelaxation<double>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/numerics/active_set.hpp>
 
@@ -588,6 +589,7 @@ using BemSolverD = BemSolver<double, StandardLinearSolid<double>>;
 extern template class BemSolver<float, StandardLinearSolid<float>>;
 extern template class BemSolver<double, StandardLinearSolid<double>>;
 extern template class BemSolver<long double, StandardLinearSolid<long double>>;
+extern template class BemSolver<double, PronyRelaxation<double>>;
 #endif
 
 }  // namespace viscoroll

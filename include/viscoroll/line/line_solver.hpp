@@ -40,6 +40,7 @@
 #include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
+#include <viscoroll/material/prony.hpp>  // compiled mode: PronyRelaxation<double>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/numerics/least_squares_minimum.hpp>
 #include <viscoroll/numerics/levenberg_marquardt.hpp>
@@ -189,78 +190,7 @@ class LineSolver {
   /// a static contact that does not converge, is returned not converged with the reason.
   template <RollerProfile Profile>
   Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
-      requires std::same_as<typename Profile::real_type, Real> {
-    if constexpr (!SingleTimeModel<Material>) {
-      return solve_spectrum(scene, start);
-    } else {
-    scene.validate();
-    const Profile& roller = scene.roller;
-    const Real c = material_.instantaneous_compliance();
-    const PronyTerm<Real> memory = detail::single_memory_term(material_);
-    const Real f = memory.f;
-    const Real c1 = roller.c1();
-    const auto inputs = [&] {
-      return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
-             ", speed = " + detail::format_value(scene.speed) +
-             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-             ", tau = " + detail::format_value(memory.tau) + ", a roller profile";
-    };
-    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-    const StaticProfileContact<Real> slow_c =
-        static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
-    if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
-    const Real a0_caller = slow_c.a(slow_c.centre());
-    const Units u = profile_units(c1, a0_caller);
-    const int d_unit = u.curvature + 2 * u.length;
-    const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
-      return profile_in_units(s, u, a0_caller, b_over);
-    };
-    const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
-    const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
-    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
-    const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
-                                     const char* reason) {
-      Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
-      sol.reason = reason;
-      add_warnings(sol, u, false);
-      return sol;
-    };
-    Solution sol = [&] {
-      if constexpr (Material::is_viscoelastic) {
-        if (f > 0 && vtau > 0) {
-          if (strip_is_glassy(vtau, f, slow.a0)) {
-            const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
-            if (fast.converged)
-              return static_solution(in_units(fast, Real(0)), Real(0),
-                                     "glassy limit (static profile contact)");
-          }
-          if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
-            const LineProblem<Real> prob{u.c1, Real(0), vtau, f, slow.a0, slow.l,
-                                         times_power_of_two((1 + f) * c * scene.load,
-                                                            -(d_unit + u.length))};
-            // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
-            // the long-term one's, b the plane's.
-            const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
-              if (ps.a == 1) return in_units(slow_c, ps.b);
-              const auto s = static_profile_contact(roller, (1 + f) * c * scene.load * ps.a * ps.a,
-                                                    profile_static_terms);
-              return in_units(s.converged ? s : slow_c, ps.b);
-            };
-            const LineScene<Real> plane{.c1 = c1, .c2 = Real(0), .load = scene.load,
-                                        .speed = scene.speed};
-            return rolling_from(plane, u, slow, prob, c, start,
-                                ProfileDrop<Profile>(roller, u.length, u.curvature), cold);
-          }
-        }
-      }
-      return static_solution(long_term, f,
-                             "static (static profile contact)");
-    }();
-    check_body_end(sol, roller, u);
-    return in_caller_units(std::move(sol), u, c1, inputs);
-    }
-  }
+      requires std::same_as<typename Profile::real_type, Real>;
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
   LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const
@@ -1110,6 +1040,86 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
   }
 }
 
+// Out of the class (not inline), as solve(LineScene) is: an explicit instantiation
+// declaration (compiled mode) then keeps it out of the including translation unit.
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
+template <RollerProfile Profile>
+auto LineSolver<Real, Material, Quadrature>::solve(const LineProfileScene<Profile>& scene,
+                                                   const Solution* start) const -> Solution
+    requires std::same_as<typename Profile::real_type, Real> {
+  if constexpr (!SingleTimeModel<Material>) {
+    return solve_spectrum(scene, start);
+  } else {
+  scene.validate();
+  const Profile& roller = scene.roller;
+  const Real c = material_.instantaneous_compliance();
+  const PronyTerm<Real> memory = detail::single_memory_term(material_);
+  const Real f = memory.f;
+  const Real c1 = roller.c1();
+  const auto inputs = [&] {
+    return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
+           ", speed = " + detail::format_value(scene.speed) +
+           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+           ", tau = " + detail::format_value(memory.tau) + ", a roller profile";
+  };
+  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+  const StaticProfileContact<Real> slow_c =
+      static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
+  if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
+  const Real a0_caller = slow_c.a(slow_c.centre());
+  const Units u = profile_units(c1, a0_caller);
+  const int d_unit = u.curvature + 2 * u.length;
+  const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
+    return profile_in_units(s, u, a0_caller, b_over);
+  };
+  const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
+  const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
+  const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+  const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
+  const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
+                                   const char* reason) {
+    Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
+    sol.reason = reason;
+    add_warnings(sol, u, false);
+    return sol;
+  };
+  Solution sol = [&] {
+    if constexpr (Material::is_viscoelastic) {
+      if (f > 0 && vtau > 0) {
+        if (strip_is_glassy(vtau, f, slow.a0)) {
+          const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
+          if (fast.converged)
+            return static_solution(in_units(fast, Real(0)), Real(0),
+                                   "glassy limit (static profile contact)");
+        }
+        if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
+          const LineProblem<Real> prob{u.c1, Real(0), vtau, f, slow.a0, slow.l,
+                                       times_power_of_two((1 + f) * c * scene.load,
+                                                          -(d_unit + u.length))};
+          // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
+          // the long-term one's, b the plane's.
+          const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
+            if (ps.a == 1) return in_units(slow_c, ps.b);
+            const auto s = static_profile_contact(roller, (1 + f) * c * scene.load * ps.a * ps.a,
+                                                  profile_static_terms);
+            return in_units(s.converged ? s : slow_c, ps.b);
+          };
+          const LineScene<Real> plane{.c1 = c1, .c2 = Real(0), .load = scene.load,
+                                      .speed = scene.speed};
+          return rolling_from(plane, u, slow, prob, c, start,
+                              ProfileDrop<Profile>(roller, u.length, u.curvature), cold);
+        }
+      }
+    }
+    return static_solution(long_term, f,
+                           "static (static profile contact)");
+  }();
+  check_body_end(sol, roller, u);
+  return in_caller_units(std::move(sol), u, c1, inputs);
+  }
+}
+
 /// The scalar deduced from the material: LineSolver solver(StandardLinearSolid<double>(...)).
 template <ConstitutiveModel Material>
 LineSolver(Material) -> LineSolver<typename Material::real_type, Material>;
@@ -1128,6 +1138,26 @@ using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
 extern template class LineSolver<float, StandardLinearSolid<float>>;
 extern template class LineSolver<double, StandardLinearSolid<double>>;
 extern template class LineSolver<long double, StandardLinearSolid<long double>>;
+// A Prony series over double: its entry points only (the class's private steps are those of a
+// single relaxation time). The rolling line contact of the roller profiles (roller/profile.hpp)
+// over double, for the standard linear solid and for a Prony series: solve(LineProfileScene) is
+// a member template, which the class's explicit instantiation does not cover.
+extern template LineSolver<double, PronyRelaxation<double>>::Solution
+LineSolver<double, PronyRelaxation<double>>::solve(
+    const LineScene<double>&, const LineSolver<double, PronyRelaxation<double>>::Solution*) const;
+#define VISCOROLL_LINE_PROFILE_SOLVE(MATERIAL, PROFILE)                                          \
+  extern template LineSolver<double, MATERIAL<double>>::Solution                                 \
+  LineSolver<double, MATERIAL<double>>::solve(const LineProfileScene<PROFILE<double>>&,          \
+                                              const LineSolver<double, MATERIAL<double>>::Solution*) const;
+VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, EllipsoidProfile)
+VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, CrownedCylinder)
+VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, LogarithmicCrown)
+VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, TabulatedProfile)
+VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, EllipsoidProfile)
+VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, CrownedCylinder)
+VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, LogarithmicCrown)
+VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, TabulatedProfile)
+#undef VISCOROLL_LINE_PROFILE_SOLVE
 #endif
 
 }  // namespace viscoroll
