@@ -188,9 +188,20 @@ class LineSolver {
   /// `d_long_term` are the long-term one's a(0), l and d. Throws std::invalid_argument for an
   /// invalid scene (LineProfileScene::validate); a contact that reaches the roller's body end, or
   /// a static contact that does not converge, is returned not converged with the reason.
+  /// Every profile is solved through its ProfileView (roller/profile.hpp), by solve_profile.
   template <RollerProfile Profile>
   Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
-      requires std::same_as<typename Profile::real_type, Real>;
+      requires std::same_as<typename Profile::real_type, Real> {
+    return solve_profile(LineProfileScene<ProfileView<Real>>{.roller = ProfileView<Real>(scene.roller),
+                                                             .load = scene.load,
+                                                             .speed = scene.speed},
+                         start);
+  }
+
+  /// solve(LineProfileScene) for the view of any profile: one function per scalar and material,
+  /// not one per profile type (a member of the class's explicit instantiation in compiled mode).
+  Solution solve_profile(const LineProfileScene<ProfileView<Real>>& scene,
+                         const Solution* start = nullptr) const;
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
   LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const
@@ -1044,10 +1055,9 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
 // declaration (compiled mode) then keeps it out of the including translation unit.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
-template <RollerProfile Profile>
-auto LineSolver<Real, Material, Quadrature>::solve(const LineProfileScene<Profile>& scene,
-                                                   const Solution* start) const -> Solution
-    requires std::same_as<typename Profile::real_type, Real> {
+auto LineSolver<Real, Material, Quadrature>::solve_profile(
+    const LineProfileScene<ProfileView<Real>>& scene, const Solution* start) const -> Solution {
+  using Profile = ProfileView<Real>;
   if constexpr (!SingleTimeModel<Material>) {
     return solve_spectrum(scene, start);
   } else {
@@ -1139,25 +1149,14 @@ extern template class LineSolver<float, StandardLinearSolid<float>>;
 extern template class LineSolver<double, StandardLinearSolid<double>>;
 extern template class LineSolver<long double, StandardLinearSolid<long double>>;
 // A Prony series over double: its entry points only (the class's private steps are those of a
-// single relaxation time). The rolling line contact of the roller profiles (roller/profile.hpp)
-// over double, for the standard linear solid and for a Prony series: solve(LineProfileScene) is
-// a member template, which the class's explicit instantiation does not cover.
+// single relaxation time): the paper's ellipsoid and the roller profiles (through ProfileView).
 extern template LineSolver<double, PronyRelaxation<double>>::Solution
 LineSolver<double, PronyRelaxation<double>>::solve(
     const LineScene<double>&, const LineSolver<double, PronyRelaxation<double>>::Solution*) const;
-#define VISCOROLL_LINE_PROFILE_SOLVE(MATERIAL, PROFILE)                                          \
-  extern template LineSolver<double, MATERIAL<double>>::Solution                                 \
-  LineSolver<double, MATERIAL<double>>::solve(const LineProfileScene<PROFILE<double>>&,          \
-                                              const LineSolver<double, MATERIAL<double>>::Solution*) const;
-VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, EllipsoidProfile)
-VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, CrownedCylinder)
-VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, LogarithmicCrown)
-VISCOROLL_LINE_PROFILE_SOLVE(StandardLinearSolid, TabulatedProfile)
-VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, EllipsoidProfile)
-VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, CrownedCylinder)
-VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, LogarithmicCrown)
-VISCOROLL_LINE_PROFILE_SOLVE(PronyRelaxation, TabulatedProfile)
-#undef VISCOROLL_LINE_PROFILE_SOLVE
+extern template LineSolver<double, PronyRelaxation<double>>::Solution
+LineSolver<double, PronyRelaxation<double>>::solve_profile(
+    const LineProfileScene<ProfileView<double>>&,
+    const LineSolver<double, PronyRelaxation<double>>::Solution*) const;
 #endif
 
 }  // namespace viscoroll

@@ -242,4 +242,40 @@ class Tilted {
   real_type theta_;
 };
 
+/// A view of any RollerProfile over Real, itself a RollerProfile: it refers to the profile (which
+/// must outlive it) and calls its drop and drop_slope through two function pointers. The line
+/// solver solves every profile through a ProfileView, so that its rolling iteration is compiled
+/// once per scalar and material rather than once per profile type (docs/building.md, "Build
+/// cost"); the same arithmetic, so the same digits, as the profile's own.
+template <RealScalar Real>
+class ProfileView {
+ public:
+  using real_type = Real;
+  template <RollerProfile P>
+    requires(std::same_as<typename P::real_type, Real> && !std::same_as<P, ProfileView>)
+  explicit ProfileView(const P& profile)
+      : profile_(&profile),
+        drop_([](const void* p, Real y) -> Real { return static_cast<const P*>(p)->drop(y); }),
+        slope_([](const void* p, Real y) -> Real {
+          return static_cast<const P*>(p)->drop_slope(y);
+        }),
+        c1_(profile.c1()),
+        y_min_(profile.y_min()),
+        y_max_(profile.y_max()),
+        symmetric_(profile.symmetric()) {}
+  Real c1() const { return c1_; }
+  Real drop(Real y) const { return drop_(profile_, y); }
+  Real drop_slope(Real y) const { return slope_(profile_, y); }
+  Real y_min() const { return y_min_; }
+  Real y_max() const { return y_max_; }
+  bool symmetric() const { return symmetric_; }
+
+ private:
+  const void* profile_;
+  Real (*drop_)(const void*, Real);
+  Real (*slope_)(const void*, Real);
+  Real c1_, y_min_, y_max_;
+  bool symmetric_;
+};
+
 }  // namespace viscoroll
