@@ -7,7 +7,7 @@ set(VISCOROLL_INSTALL_CMAKEDIR ${CMAKE_INSTALL_DATADIR}/cmake/viscoroll
 
 install(TARGETS viscoroll EXPORT viscorollTargets)
 if(TARGET viscoroll_compiled)
-  install(TARGETS viscoroll_compiled EXPORT viscorollTargets
+  install(TARGETS viscoroll_compiled viscoroll_compiled_double EXPORT viscorollTargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/

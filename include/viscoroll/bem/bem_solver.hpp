@@ -581,14 +581,17 @@ BemSolver(Material, BemOptions) -> BemSolver<typename Material::real_type, Mater
 using BemSolverD = BemSolver<double, StandardLinearSolid<double>>;
 
 // Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
-// viscoroll::compiled sets, the solvers below are instantiated once in that library (src/) and
+// viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
+// ones only), the solvers below are instantiated once in that library (src/) and
 // not in the including translation unit. Their entry points are defined out of the class (not
 // inline), so that g++ does not instantiate them here for inlining either. Other instantiations
 // are implicit, as in header-only mode.
 #if defined(VISCOROLL_COMPILED)
 extern template class BemSolver<float, StandardLinearSolid<float>>;
-extern template class BemSolver<double, StandardLinearSolid<double>>;
 extern template class BemSolver<long double, StandardLinearSolid<long double>>;
+#endif
+#if defined(VISCOROLL_COMPILED) || defined(VISCOROLL_COMPILED_DOUBLE)
+extern template class BemSolver<double, StandardLinearSolid<double>>;
 extern template class BemSolver<double, PronyRelaxation<double>>;
 #endif
 

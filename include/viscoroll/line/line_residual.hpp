@@ -453,14 +453,17 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
 }
 
 // Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
-// viscoroll::compiled sets, the residuals of the line solvers' default rule (12-point
+// viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
+// ones only), the residuals of the line solvers' default rule (12-point
 // Gauss-Legendre) are instantiated once in that library (src/) and not in the including
 // translation unit; operator() and jacobian() are defined out of the class (not inline), so that
 // g++ does not instantiate them here for inlining either.
 #if defined(VISCOROLL_COMPILED)
 extern template class LineResidual<float, GaussLegendre<float, 12>>;
-extern template class LineResidual<double, GaussLegendre<double, 12>>;
 extern template class LineResidual<long double, GaussLegendre<long double, 12>>;
+#endif
+#if defined(VISCOROLL_COMPILED) || defined(VISCOROLL_COMPILED_DOUBLE)
+extern template class LineResidual<double, GaussLegendre<double, 12>>;
 #endif
 
 }  // namespace viscoroll

@@ -1140,14 +1140,17 @@ LineSolver(Material, LineOptions) -> LineSolver<typename Material::real_type, Ma
 using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
 
 // Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
-// viscoroll::compiled sets, the solvers below are instantiated once in that library (src/) and
+// viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
+// ones only), the solvers below are instantiated once in that library (src/) and
 // not in the including translation unit. Their entry points are defined out of the class (not
 // inline), so that g++ does not instantiate them here for inlining either. Other instantiations
 // are implicit, as in header-only mode.
 #if defined(VISCOROLL_COMPILED)
 extern template class LineSolver<float, StandardLinearSolid<float>>;
-extern template class LineSolver<double, StandardLinearSolid<double>>;
 extern template class LineSolver<long double, StandardLinearSolid<long double>>;
+#endif
+#if defined(VISCOROLL_COMPILED) || defined(VISCOROLL_COMPILED_DOUBLE)
+extern template class LineSolver<double, StandardLinearSolid<double>>;
 // A Prony series over double: its entry points only (the class's private steps are those of a
 // single relaxation time): the paper's ellipsoid and the roller profiles (through ProfileView).
 extern template LineSolver<double, PronyRelaxation<double>>::Solution
