@@ -192,10 +192,9 @@ class LineSolver {
   template <RollerProfile Profile>
   Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
       requires std::same_as<typename Profile::real_type, Real> {
-    return solve_profile(LineProfileScene<ProfileView<Real>>{.roller = ProfileView<Real>(scene.roller),
-                                                             .load = scene.load,
-                                                             .speed = scene.speed},
-                         start);
+    const LineProfileScene<ProfileView<Real>> viewed{
+        .roller = ProfileView<Real>(scene.roller), .load = scene.load, .speed = scene.speed};
+    return solve_profile(viewed, start);
   }
 
   /// solve(LineProfileScene) for the view of any profile: one function per scalar and material,
