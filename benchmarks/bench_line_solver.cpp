@@ -16,6 +16,8 @@
 //                       f = 2, (1 + f) c P = 0.3, long-term static a0 = 0.2878) at V tau/a0 =
 //                       s/1000 with `terms` = N and quadrature_tolerance = 10^-k (k = 0: eps);
 //                       counters d and chi, to compare the settings' answers;
+//   BM_line_tilted_roller/N/s/k: the same roller misaligned by theta = 0.003 (the asymmetric
+//                       contact, docs/theory.md section 16; validation.md "Tilted rollers");
 //   BM_line_sweep/N:    the figures' sweep (examples/panek_kalker): 101 speeds V tau/a0 = 10^-3 ...
 //                       10^3, evenly spaced in log, each seeded with the last converged solution.
 // Counters: iterations, converged (1/0) and, for the sweep, the speeds that did not converge (the
@@ -80,14 +82,16 @@ void BM_line_solve_fast_full_stages(benchmark::State& state) {
   solve_with(state, options, static_cast<double>(state.range(0)) / 1000);
 }
 
-void BM_line_crowned_roller(benchmark::State& state) {
+/// The crowned roller of BM_line_crowned_roller misaligned by `tilt` (0: the symmetric contact).
+void crowned_roller(benchmark::State& state, double tilt) {
   const viscoroll::StandardLinearSolid<double> rubber(1, 0.5, 2, 1);
   viscoroll::LineOptions options;
   options.terms = static_cast<int>(state.range(0));
   options.quadrature_tolerance = state.range(2) == 0 ? 0.0 : std::pow(10.0, -state.range(2));
   const viscoroll::LineSolverD solver(rubber, options);
-  const viscoroll::LineProfileScene<viscoroll::CrownedCylinder<double>> scene{
-      viscoroll::CrownedCylinder<double>(1.0, 10.0, 20.0),
+  using Roller = viscoroll::Tilted<viscoroll::CrownedCylinder<double>>;
+  const viscoroll::LineProfileScene<Roller> scene{
+      Roller(viscoroll::CrownedCylinder<double>(1.0, 10.0, 20.0), tilt),
       0.3 / (3 * rubber.instantaneous_compliance()),
       0.2878 * static_cast<double>(state.range(1)) / 1000};
   viscoroll::LineSolverD::Solution s;
@@ -100,6 +104,9 @@ void BM_line_crowned_roller(benchmark::State& state) {
   state.counters["d"] = s.d;
   state.counters["chi"] = s.chi;
 }
+
+void BM_line_crowned_roller(benchmark::State& state) { crowned_roller(state, 0.0); }
+void BM_line_tilted_roller(benchmark::State& state) { crowned_roller(state, 0.003); }
 
 void BM_line_sweep(benchmark::State& state) {
   viscoroll::LineOptions options;
@@ -163,6 +170,9 @@ BENCHMARK(BM_line_solve_fast_full_stages)
     ->Arg(100000)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_crowned_roller)
+    ->ArgsProduct({{5, 8}, {100, 1000, 10000}, {0, 4}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_tilted_roller)
     ->ArgsProduct({{5, 8}, {100, 1000, 10000}, {0, 4}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_sweep)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -782,9 +782,10 @@ int line_terms(const Problem& p) {
 /// The line-contact (3-D) solver; for each tau (a prony material: each temperature) the speeds
 /// are swept by viscoroll::sweep: in chunks of 16 in the given order, each speed seeded with the
 /// previous converged iterated solution of its chunk (continuation; a closed form carries no more
-/// than the solver's own seed). A roller of finite length (untilted and symmetric,
-/// check_scene_for_method) is solved by LineSolver::solve(LineProfileScene), on a spectrum by
-/// docs/theory.md (RP5); the ellipsoid by LineSolver::solve(LineScene).
+/// than the solver's own seed). A roller of finite length (tilted or asymmetric on a standard
+/// linear solid, untilted and symmetric on a spectrum: check_scene_for_method) is solved by
+/// LineSolver::solve(LineProfileScene), on a spectrum by docs/theory.md (RP5); the ellipsoid by
+/// LineSolver::solve(LineScene).
 int run_line(const Problem& p, Output& out) {
   viscoroll::LineOptions options = p.line;
   options.terms = line_terms(p);
@@ -842,11 +843,11 @@ int run_line(const Problem& p, Output& out) {
   if (p.roller)
     return std::visit(
         [&](const auto& tilted) {
-          // Untilted here (check_scene_for_method): the profile itself.
-          using Profile = std::decay_t<decltype(tilted.base())>;
+          // Tilted (a standard linear solid's asymmetric contact) or not (check_scene_for_method).
+          using Profile = std::decay_t<decltype(tilted)>;
           return run([&](double speed) {
             return viscoroll::LineProfileScene<Profile>{
-                .roller = tilted.base(), .load = p.load, .speed = speed};
+                .roller = tilted, .load = p.load, .speed = speed};
           });
         },
         *p.roller);

@@ -26,7 +26,7 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
   const double per_load = s.f0_per_load();
   double peak = 0, at = 0;
   for (int k = 1; k <= stations; ++k) {
-    const double y = s.l() * (double(2 * k) / double(stations + 1) - 1);
+    const double y = s.shape.centre + s.l() * (double(2 * k) / double(stations + 1) - 1);
     const double f0 = s.f0(y) / per_load;
     if (!std::isfinite(f0)) return {std::nan(""), std::nan("")};
     if (f0 > peak) {
@@ -46,8 +46,13 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
 template <class Record, class Solution>
 Record line_fields(const Solution& s, const Record& middle, int terms, double seconds) {
   const auto [f0_max, f0_max_y] = line_f0_peak(s, line_profile_stations);
-  Record out = {{"a0", s.a(0.0)},  {"b0", s.b(0.0)},   {"l", s.l()},          {"y_minus", -s.l()},
-                {"y_plus", s.l()}, {"f0_max", f0_max}, {"f0_max_y", f0_max_y}};
+  Record out = {{"a0", s.a(0.0)},
+                {"b0", s.b(0.0)},
+                {"l", s.l()},
+                {"y_minus", s.shape.centre - s.l()},
+                {"y_plus", s.shape.centre + s.l()},
+                {"f0_max", f0_max},
+                {"f0_max_y", f0_max_y}};
   const Record shape = {{"d", s.d},
                         {"a_long_term", s.a_long_term},
                         {"l0", s.l_long_term},

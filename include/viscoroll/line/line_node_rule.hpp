@@ -33,7 +33,8 @@ namespace viscoroll {
 /// Members:
 ///   - `point(s, y, x0, nd)`: the nodes of one collocation point y with leading edge x0 = a + b > 0
 ///     into nd (empty on entry): both sides in s and the t-nodes of the memory integral;
-///   - `load(s, nodes, weights)`: the nodes and weights of the load integral (47) on [0, l].
+///   - `load(s, nodes, weights, side)`: the nodes and weights of the load integral (47) on [0, l]
+///     (distances from the centre c: one half of the contact).
 template <RealScalar Real, class Quadrature>
 requires NodalQuadratureRule<Quadrature, Real>
 class LineNodeRule {
@@ -56,8 +57,9 @@ class LineNodeRule {
 
   void point(const LineShape<Real>& s, Real y, Real x0, LineNodes<Real>& nd) const {
     nd.clear();
-    nd.d1 = s.l - y;
-    nd.d2 = s.l + y;
+    const Real yc = y - s.centre;  // y itself for a symmetric contact (c = 0)
+    nd.d1 = s.l - yc;
+    nd.d2 = s.l + yc;
     nd.tolerance = tolerance_;
     const Real c = std::min(Real(x0 / vtau_), Real(1));
     detail::append_log_mapped_nodes<Quadrature>(
@@ -65,16 +67,19 @@ class LineNodeRule {
     for (int side = 0; side < 2; ++side) {
       nd.side_s.clear();
       nd.side_w.clear();
-      append_side_nodes(s, side == 0 ? nd.d1 : nd.d2, side == 0 ? nd.d2 : nd.d1, x0, nd.side_s,
-                        nd.side_w);
+      append_side_nodes(s, side == 0 ? nd.d1 : nd.d2, side == 0 ? nd.d2 : nd.d1, side == 0 ? 1 : -1,
+                        x0, nd.side_s, nd.side_w);
       nd.add_side(y, side == 0 ? 1 : -1, nd.side_s, nd.side_w);
     }
   }
 
   /// A side's nodes from y = 0, with the other end at distance l and no kernel (its scale taken
   /// as l, so the first panel is l/4).
-  void load(const LineShape<Real>& s, std::vector<Real>& nodes, std::vector<Real>& weights) const {
-    append_side_nodes(s, s.l, s.l, s.l, nodes, weights);
+  /// For an asymmetric shape, `side` (+1 or -1) names the half [c, c + l] or [c - l, c] (the
+  /// nodes are distances from the centre c either way).
+  void load(const LineShape<Real>& s, std::vector<Real>& nodes, std::vector<Real>& weights,
+            int side = 1) const {
+    append_side_nodes(s, s.l, s.l, side, s.l, nodes, weights);
   }
 
  private:
@@ -90,13 +95,15 @@ class LineNodeRule {
   ///   b(y) vary at the end: l/(2N) in t^2, l/(2N^2) in sqrt(1 - t^2) (where u + 1 grows as
   ///   sqrt(l - y));
   /// - the equal panels are no wider than 8/N in w, for the same series.
-  void append_side_nodes(const LineShape<Real>& s, Real len, Real other, Real x0,
+  /// `end` (+1 or -1) is the end of the contact this side runs to (c + l or c - l): its pole
+  /// distance, and the other end's behind s = 0 (the same for a symmetric shape).
+  void append_side_nodes(const LineShape<Real>& s, Real len, Real other, int end, Real x0,
                          std::vector<Real>& sn, std::vector<Real>& sw) const {
     const Real behind =
-        basis_ == LineBasis::t_squared ? Real(other + pole_distance(s)) : Real(other);
+        basis_ == LineBasis::t_squared ? Real(other + pole_distance(s, -end)) : Real(other);
     const Real first = std::min({Real(x0 / 2), Real(len / 4), behind});
     const Real series = series_scale(s);
-    const Real last = std::min({end_width(s, len), Real(len / 5), series});
+    const Real last = std::min({end_width(s, len, end), Real(len / 5), series});
     detail::append_logit_mapped_nodes<Quadrature>(sn, sw, len, first, last, Real(8) / n_,
                                                   tolerance_);
   }
@@ -119,18 +126,19 @@ class LineNodeRule {
     }
   }
 
-  /// The distance of the nearest pole of G beyond y = +-l, where (1 + f) a(y) / V tau = +- i
-  /// j_{0,1} (a^2 < 0 just past the end), Eqs. (36), (37).
-  Real pole_distance(const LineShape<Real>& s) const {
+  /// The distance of the nearest pole of G beyond the end y = c + end l (end = +1, -1), where
+  /// (1 + f) a(y) / V tau = +- i j_{0,1} (a^2 < 0 just past the end), Eqs. (36), (37).
+  Real pole_distance(const LineShape<Real>& s, int end) const {
     const Real j01 = Real(2.404825557695772768621631879326454643124L);
-    const Real a_end = s.a_ref * s.end_factor();
+    const Real a_end = s.a_ref * s.end_factor(end);
     const Real cc = j01 * vtau_ / ((1 + f_) * a_end);
     return s.l * cc * cc / 2;  // 1 - t^2 = -cc^2 at t = 1 + cc^2/2
   }
 
-  /// The last panel toward the end of a side of length len: a quarter of pole_distance.
-  Real end_width(const LineShape<Real>& s, Real len) const {
-    return std::max(Real(pole_distance(s) / 4), Real(len * std::numeric_limits<Real>::epsilon()));
+  /// The last panel toward the end (+1, -1) of a side of length len: a quarter of pole_distance.
+  Real end_width(const LineShape<Real>& s, Real len, int end) const {
+    return std::max(Real(pole_distance(s, end) / 4),
+                    Real(len * std::numeric_limits<Real>::epsilon()));
   }
 
   LineBasis basis_;

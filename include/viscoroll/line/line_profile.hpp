@@ -1,10 +1,11 @@
-// viscoroll: the rolling line contact of a symmetric roller profile, the pieces LineSolver uses.
+// viscoroll: the rolling line contact of any roller profile, the pieces LineSolver uses.
 //
 // Panek & Kalker (1980), (34) with the roller's drop h(y) in place of C2 y^2/2 (docs/theory.md
 // section 16, (RP1)): the memory of the solid acts along x only, so the strip equations, the
 // leading-edge condition (L6) and the load (47) do not see h; (34) takes h(y), and its Jacobian
-// in ln l takes h'(y) y (nodes fixed in t = y/l). A symmetric profile keeps the line solver's even
-// representation (line_shape.hpp) on [-l, l]. The cold start is (RP8): the static contact of the
+// in ln l takes h'(y) (y - c) (nodes fixed in t = (y - c)/l). A symmetric profile keeps the line
+// solver's even representation (line_shape.hpp) on [-l, l]; an asymmetric one (a tilt) adds the odd
+// parts and the centre c ((RP6), (RP7)). The cold start is (RP8): the static contact of the
 // profile (static_profile_contact.hpp) at the compliance load (1 + f) c P (a/a0)^2 of the plane
 // solution at the same V tau/a0, whose lengths scale as (a/a0)^(2/3) as (48)'s do.
 #pragma once
@@ -22,8 +23,8 @@
 
 namespace viscoroll {
 
-/// A roller of any symmetric profile (roller/profile.hpp) under a load, rolling at a speed: the
-/// scene of LineSolver::solve for a profile.
+/// A roller of any profile (roller/profile.hpp) under a load, rolling at a speed: the scene of
+/// LineSolver::solve for a profile.
 template <RollerProfile Profile>
 struct LineProfileScene {
   using Real = typename Profile::real_type;
@@ -31,15 +32,20 @@ struct LineProfileScene {
   Real load = detail::required_field<Real>();
   Real speed = detail::required_field<Real>();
 
-  /// Throws std::invalid_argument naming the parameter unless load > 0, speed >= 0 (finite) and
-  /// the profile is symmetric (h(-y) = h(y)): a tilted or asymmetric roller is solved by the BEM
-  /// (bem/bem_profile.hpp); the line solver's contact is [-l, l].
+  /// Throws std::invalid_argument naming the parameter unless load > 0 and speed >= 0 (finite).
   void validate() const {
     detail::require_positive("load", load);
     detail::require_non_negative("speed", speed);
+  }
+  /// validate(), and the profile symmetric (h(-y) = h(y)): the line solver for a spectrum
+  /// (LineSpectrumResidual) collocates on y > 0 only; a tilted or asymmetric roller on a spectrum
+  /// is solved by BemSolver (bem_profile.hpp).
+  void validate_symmetric() const {
+    validate();
     detail::require(roller.symmetric(), "roller", 0,
-                    "a symmetric profile (h(-y) = h(y), no tilt) for the line solver; a tilted or "
-                    "asymmetric roller is solved by BemSolver (bem_profile.hpp)");
+                    "a symmetric profile (h(-y) = h(y), no tilt) for the line solver on a material "
+                    "with several relaxation times; a tilted or asymmetric roller on such a "
+                    "material is solved by BemSolver (bem_profile.hpp)");
   }
 };
 
@@ -71,21 +77,33 @@ class ProfileDrop {
 /// A static profile contact (G3) as the line solver's shape (line_shape.hpp, t_squared) with
 /// unit a_ref, n coefficients of ln a and b = b_over a_ref: ln(a/(a_ref sqrt(1 - t^2))) =
 /// ln(a_ref_s/a_ref) + ln(omega_e(t)/(1 - t^2))/2 + sum alpha_k T_k(t) interpolated in u =
-/// 2t^2 - 1 at the zeros of T_n (the even part of (G3): a symmetric contact's odd part vanishes).
-/// In the contact's own units (a_ref and s's lengths alike).
+/// 2t^2 - 1 at the zeros of T_n: its even part, and for `asymmetric` also its odd part
+/// (series(t) - series(-t))/(2t) (omega_e is even) and the centre c. In the contact's own units
+/// (a_ref and s's lengths alike).
 template <RealScalar Real>
 LineShape<Real> profile_line_shape(const StaticProfileContact<Real>& s, Real a_ref, int n,
-                                   Real b_over) {
+                                   Real b_over, bool asymmetric = false) {
   using std::log;
   using std::sqrt;
   const Real ratio = log(s.a_ref / a_ref);
   const auto g = [&](Real w) {
     const Real t = sqrt(1 - w);
-    return ratio + log(s.weight(t) / w) / 2 + s.series(t);
+    const Real series = asymmetric ? (s.series(t) + s.series(-t)) / 2 : s.series(t);
+    return ratio + log(s.weight(t) / w) / 2 + series;
   };
-  return LineShape<Real>{a_ref, s.half_length(),
-                         LineShape<Real>::interpolate(LineBasis::t_squared, Real(0), n, g),
-                         {b_over}};
+  LineShape<Real> shape{a_ref, s.half_length(),
+                        LineShape<Real>::interpolate(LineBasis::t_squared, Real(0), n, g),
+                        {b_over}};
+  if (asymmetric) {
+    const auto odd = [&](Real w) {
+      const Real t = sqrt(1 - w);
+      return (s.series(t) - s.series(-t)) / (2 * t);
+    };
+    shape.alpha_odd = LineShape<Real>::interpolate(LineBasis::t_squared, Real(0), n, odd);
+    shape.beta_odd = {Real(0)};
+    shape.centre = s.centre();
+  }
+  return shape;
 }
 
 }  // namespace viscoroll

@@ -73,10 +73,11 @@ struct ExteriorLeadingEdge {
 
 /// The roller's drop h(y) along its axis in (34), a policy of the line residuals (LineResidual,
 /// LineSpectrumResidual): a D provides `Real drop(const Problem&, Real y) const` and
-/// `Real drop_slope(const Problem&, Real y) const`, h(y) and h'(y) in the residual's units for
-/// |y| < l, h even in y (the residuals collocate on y > 0); Problem the residual's constants
-/// (LineProblem, LineSpectrumProblem). Models: ParabolicDrop (the paper's Eq. 27, from the
-/// problem's c2) and ProfileDrop (line_profile.hpp, a symmetric RollerProfile).
+/// `Real drop_slope(const Problem&, Real y) const`, h(y) and h'(y) in the residual's units inside
+/// the contact; h even in y unless the residual is asymmetric (LineResidual's `asymmetric`: the
+/// others collocate on y > 0); Problem the residual's constants (LineProblem,
+/// LineSpectrumProblem). Models: ParabolicDrop (the paper's Eq. 27, from the problem's c2) and
+/// ProfileDrop (line_profile.hpp, a RollerProfile).
 template <class D, class Real, class Problem = LineProblem<Real>>
 concept RollerDrop = requires(const D& d, const Problem& p, Real y) {
   { d.drop(p, y) } -> std::convertible_to<Real>;
@@ -111,12 +112,18 @@ class LineResidual {
   /// quadrature_tolerance: the relative accuracy of every integral (LineNodeRule); 0, the default,
   /// the scalar's epsilon (every integral exact to rounding).
   /// drop: the roller's h(y) (the paper's C2 y^2/2 by default).
+  /// asymmetric: the contact [c - l, c + l] of a roller whose drop is not even (a tilt;
+  /// docs/theory.md (RP7)): a(y), b(y) take odd parts of as many coefficients as their even parts,
+  /// the centre c is an unknown, and the equations are collocated at the points +-t_i; the even
+  /// unknowns keep their places, the odd ones follow (unknowns()).
   LineResidual(LineProblem<Real> problem, int terms, LineBasis basis = LineBasis::t_squared,
-               int oversampling = 1, Real quadrature_tolerance = Real(0), Drop drop = Drop{})
+               int oversampling = 1, Real quadrature_tolerance = Real(0), Drop drop = Drop{},
+               bool asymmetric = false)
       : p_(problem),
         drop_(std::move(drop)),
         n_(terms),
         oversampling_(oversampling),
+        asymmetric_(asymmetric),
         basis_(basis),
         scale_(basis == LineBasis::s_mapped
                    ? LineShape<Real>::mapped_scale(problem.vtau, problem.f, problem.a_ref)
@@ -128,20 +135,27 @@ class LineResidual {
     using std::cos;
     using std::sqrt;
     const Real pi = boost::math::constants::pi<Real>();
-    const int m = points();
+    const int m = (n_ + 1) * oversampling_;
     for (int i = 1; i <= m; ++i) {
       // Chebyshev points in the expansion variable v; t = sqrt(1 - w(v)) in (0, 1).
       const Real v = cos(pi * Real(2 * i - 1) / Real(2 * m));
       t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, scale_, v)));
     }
+    // The asymmetric contact's points on t < 0: the mirror images, exactly (negation).
+    if (asymmetric_)
+      for (int i = 0; i < m; ++i) t_.push_back(-t_[i]);
   }
 
   int terms() const { return n_; }
-  /// Collocation points: (N + 1) times the oversampling (N + 1 for the square system).
-  int points() const { return (n_ + 1) * oversampling_; }
+  /// Collocation points: (N + 1) times the oversampling (N + 1 for the square system), twice
+  /// that for an asymmetric contact.
+  int points() const { return (n_ + 1) * oversampling_ * (asymmetric_ ? 2 : 1); }
   int oversampling() const { return oversampling_; }
-  /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, ln(l / l_ref), d / (C1 a_ref^2).
-  int unknowns() const { return 2 * n_ + 3; }
+  bool asymmetric() const { return asymmetric_; }
+  /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, ln(l / l_ref), d / (C1 a_ref^2); for an
+  /// asymmetric contact then gamma_0..gamma_{N-1}, delta_0..delta_N (the odd parts,
+  /// line_shape.hpp) and c / l_ref (the centre).
+  int unknowns() const { return 2 * n_ + 3 + (asymmetric_ ? 2 * n_ + 2 : 0); }
   /// Equations: (34) and the leading-edge condition at each point, then the load (47).
   int equations() const { return 2 * points() + 1; }
   const std::vector<Real>& collocation() const { return t_; }
@@ -152,6 +166,11 @@ class LineResidual {
     LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}, basis_, scale_};
     for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
     for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
+    if (asymmetric_) {
+      for (int k = 0; k < n_; ++k) s.alpha_odd.push_back(x[odd_alpha() + k]);
+      for (int k = 0; k <= n_; ++k) s.beta_odd.push_back(x[odd_beta() + k]);
+      s.centre = x[centre_index()] * p_.l_ref;
+    }
     return s;
   }
   Real penetration(const Vector& x) const { return x[2 * n_ + 2] * p_.c1 * p_.a_ref * p_.a_ref; }
@@ -161,13 +180,21 @@ class LineResidual {
     using std::log;
     // Same variable and no more terms: pad with zeros (exact); otherwise re-expand.
     const bool pad = given.basis == basis_ && given.scale == scale_ &&
-                     int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1;
+                     int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1 &&
+                     int(given.alpha_odd.size()) <= n_ && int(given.beta_odd.size()) <= n_ + 1;
     const LineShape<Real> s = pad ? given : given.reexpanded(basis_, n_, scale_);
     Vector x = Vector::Zero(unknowns());
     for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
     for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
     x[2 * n_ + 1] = log(s.l / p_.l_ref);
     x[2 * n_ + 2] = d / (p_.c1 * p_.a_ref * p_.a_ref);
+    if (asymmetric_) {
+      for (int k = 0; k < n_ && k < int(s.alpha_odd.size()); ++k)
+        x[odd_alpha() + k] = s.alpha_odd[k];
+      for (int k = 0; k <= n_ && k < int(s.beta_odd.size()); ++k)
+        x[odd_beta() + k] = s.beta_odd[k];
+      x[centre_index()] = s.centre / p_.l_ref;
+    }
     return x;
   }
 
@@ -178,17 +205,26 @@ class LineResidual {
   /// or a non-finite value.
   bool operator()(const Vector& x, Vector& r) const;
 
-  /// int_{-l}^{l} F0 dy (Eq. 47).
+  /// int_{c-l}^{c+l} F0 dy (Eq. 47): twice one half for a symmetric contact, else both halves.
   Real load(const LineShape<Real>& s) const {
     std::vector<Real> nodes, weights;
-    rule_.load(s, nodes, weights);
-    Real sum = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j)
-      sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
-    return 2 * sum;
+    Real total = 0;
+    for (int side : {1, -1}) {
+      nodes.clear();
+      weights.clear();
+      rule_.load(s, nodes, weights, side);
+      Real sum = 0;
+      for (std::size_t j = 0; j < nodes.size(); ++j) {
+        const Real y = asymmetric_ ? Real(s.centre + side * nodes[j]) : nodes[j];
+        sum += weights[j] * strip_functions(p_.c1, s.a(y), s.b(y), p_.vtau, p_.f).f0;
+      }
+      if (!asymmetric_) return 2 * sum;
+      total += sum;
+    }
+    return total;
   }
 
-  /// (34) and the leading-edge residual at one y, |y| < l (scaled as in operator()).
+  /// (34) and the leading-edge residual at one y, |y - c| < l (scaled as in operator()).
   bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle) const {
     PointWork work;
     return at_point(s, d, y, r34, rle, work);
@@ -291,17 +327,22 @@ class LineResidual {
             ri_x};
   }
 
-  /// d a(y)/d x and d b(y)/d x at y for fixed t = y/l (zero in ln l and d).
+  /// d a(y)/d x and d b(y)/d x at y for fixed t = (y - c)/l (zero in ln l, d and c).
   void shape_gradient(const LineShape<Real>& s, Real y, Real a, Vector& da, Vector& db) const {
     da.setZero(unknowns());
     db.setZero(unknowns());
     const Real w = s.one_minus_t2(y);
     const Real u = LineShape<Real>::coordinate(basis_, scale_, w > 0 ? w : Real(0));
+    const Real t = asymmetric_ ? s.t_at(y) : Real(0);
     Real tkm1 = 1, tk = u;  // T_0, T_1
     for (int k = 0; k <= n_; ++k) {
       const Real tval = k == 0 ? Real(1) : tk;
       if (k < n_) da[k] = a * tval;
       db[n_ + k] = p_.a_ref * tval;
+      if (asymmetric_) {
+        if (k < n_) da[odd_alpha() + k] = a * t * tval;
+        db[odd_beta() + k] = p_.a_ref * t * tval;
+      }
       if (k >= 1) {
         const Real next = 2 * u * tk - tkm1;
         tkm1 = tk;
@@ -310,10 +351,16 @@ class LineResidual {
     }
   }
 
+  /// Where the asymmetric contact's unknowns sit: gamma, delta, c / l_ref.
+  int odd_alpha() const { return 2 * n_ + 3; }
+  int odd_beta() const { return 3 * n_ + 3; }
+  int centre_index() const { return 4 * n_ + 4; }
+
   LineProblem<Real> p_;
   Drop drop_;
   int n_;
   int oversampling_;
+  bool asymmetric_ = false;
   LineBasis basis_;
   Real scale_;  ///< e of LineBasis::s_mapped, else 0
   LineNodeRule<Real, Quadrature> rule_;
@@ -332,7 +379,7 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector&
   PointWork work;
   for (int i = 0; i < m; ++i) {
     Real r34 = 0, rle = 0;
-    if (!at_point(s, d, t_[i] * s.l, r34, rle, work)) return false;
+    if (!at_point(s, d, s.centre + t_[i] * s.l, r34, rle, work)) return false;
     // (34) depends on b through C1 V b, the leading-edge condition through its slope C1 V (as
     // V tau >> a): adding V/a_ref times the latter (scaled to an error in b/a_ref) cancels the b
     // dependence of (34) to first order, so that (34) speaks for a, l and d at every speed. A row
@@ -366,7 +413,7 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
   std::vector<StripDerivatives> dn;
   ExteriorSlopes<Real> slopes;
   for (int i = 0; i < m; ++i) {
-    const Real t = t_[i], y = t * s.l;
+    const Real t = t_[i], y = s.centre + t * s.l;
     const auto dh = strip_derivatives(s.a(y), s.b(y));
     const auto& here = dh.value;
     const Real a = here.a, b = here.b, x0 = a + b;
@@ -412,11 +459,13 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
     dright[lam] += slopes.l;
     // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
     //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - h(y) + d, dh/d ln l = h'(y) y at fixed t.
-    const Real lnfac = log(4 * (s.l - y) / a) + log(4 * (s.l + y) / a);
+    const Real lnfac = log(4 * nd.d1 / a) + log(4 * nd.d2 / a);
     dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
     dlhs[lam] += 2 * here.f0;
     Vector drhs = -(c1 * a / 2) * da_i - c1 * (b - v) * db_i;
-    drhs[lam] -= drop_.drop_slope(p_, y) * y;
+    const Real slope_h = drop_.drop_slope(p_, y);
+    drhs[lam] -= slope_h * (y - s.centre);  // y - c = l t: y for a symmetric contact
+    if (asymmetric_) drhs[centre_index()] -= slope_h * p_.l_ref;
     drhs[del] += scale34;
     const Vector dr34 = (dlhs - drhs) / scale34;
     // Leading edge: rle = (bessel - right) / (slope a_ref).
@@ -431,22 +480,37 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
     jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
     jac.row(m + i) = drle.transpose();
   }
-  // Load (47), nodes fixed in y/l: d/d ln l of the integral is the integral itself.
+  // Load (47), nodes fixed in t: d/d ln l of the integral is the integral itself; twice one
+  // half for a symmetric contact, both halves for an asymmetric one (as load()).
   std::vector<Real> nodes, weights;
-  rule_.load(s, nodes, weights);
-  Real sum = 0;
-  Vector dsum = Vector::Zero(nu);
-  for (std::size_t j = 0; j < nodes.size(); ++j) {
-    const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
-    const auto& sf = dj.value;
-    sum += weights[j] * sf.f0;
-    if (!(sf.a > 0)) continue;
-    shape_gradient(s, nodes[j], sf.a, dan, dbn);
-    dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
+  Real total = 0;
+  Vector dtotal = Vector::Zero(nu);
+  for (int side : {1, -1}) {
+    nodes.clear();
+    weights.clear();
+    rule_.load(s, nodes, weights, side);
+    Real sum = 0;
+    Vector dsum = Vector::Zero(nu);
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      const Real yj = asymmetric_ ? Real(s.centre + side * nodes[j]) : nodes[j];
+      const auto dj = strip_derivatives(s.a(yj), s.b(yj));
+      const auto& sf = dj.value;
+      sum += weights[j] * sf.f0;
+      if (!(sf.a > 0)) continue;
+      shape_gradient(s, yj, sf.a, dan, dbn);
+      dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
+    }
+    if (!asymmetric_) {
+      total = 2 * sum;
+      dtotal = 2 * dsum;
+      break;
+    }
+    total += sum;
+    dtotal += dsum;
   }
-  r[2 * m] = 2 * sum / p_.load_target - 1;
-  jac.row(2 * m) = (2 * dsum / p_.load_target).transpose();
-  jac(2 * m, lam) = 2 * sum / p_.load_target;
+  r[2 * m] = total / p_.load_target - 1;
+  jac.row(2 * m) = (dtotal / p_.load_target).transpose();
+  jac(2 * m, lam) = total / p_.load_target;
   for (int i = 0; i < r.size(); ++i)
     if (!(boost::math::isfinite)(r[i])) return false;
   return jac.allFinite();

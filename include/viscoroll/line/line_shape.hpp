@@ -1,9 +1,12 @@
 // viscoroll: the representation of the contact zone of the line solver.
 //
 // Panek & Kalker (1980), Section 7, leave the parametrisation of a(y) and b(y) open. Ours, with
-// t = y/l and u = 2 t^2 - 1 (both functions are even in y, by the symmetry of the scene):
-//   a(y) = a_ref sqrt(1 - t^2) exp(sum_{k<N} alpha_k T_k(u)),   b(y) = a_ref sum_{k<=N} beta_k T_k(u),
-// T_k the Chebyshev polynomials. a(+-l) = 0 holds by construction, with the square-root end of
+// t = (y - c)/l and u = 2 t^2 - 1 (c = 0 and both functions even in y for a symmetric scene):
+//   a(y) = a_ref sqrt(1 - t^2) exp(sum_{k<N} alpha_k T_k(u) + t sum_{k<N} gamma_k T_k(u)),
+//   b(y) = a_ref (sum_{k<=N} beta_k T_k(u) + t sum_{k<=N} delta_k T_k(u)),
+// T_k the Chebyshev polynomials; the odd parts (gamma, delta: alpha_odd, beta_odd) and the centre c
+// only for an asymmetric contact (a tilted roller, docs/theory.md (RP6), (RP7)), empty otherwise.
+// a(c +- l) = 0 holds by construction, with the square-root end of
 // the static solution (48) (alpha = beta = 0 is Kalker's static contact), and a > 0 inside for
 // any coefficients. G (36), F0 (33) and Q (46) follow pointwise from the strip at each y
 // (core/strip.hpp, strip_functions; docs/theory.md section 4).
@@ -39,6 +42,14 @@ struct LineShape {
   std::vector<Real> beta;   ///< Chebyshev coefficients of b / a_ref
   LineBasis basis = LineBasis::t_squared;
   Real scale = 0;  ///< e of LineBasis::s_mapped (unused by the other variables)
+  /// The asymmetric contact's parts (empty and 0 for a symmetric one): the coefficients of the
+  /// odd parts t sum gamma_k T_k(u) of ln(a/(a_ref sqrt(1 - t^2))) and t sum delta_k T_k(u) of
+  /// b/a_ref, and the centre c of the contact [c - l, c + l].
+  std::vector<Real> alpha_odd{}, beta_odd{};
+  Real centre = 0;
+
+  /// Whether the shape has an odd part or a centre (an asymmetric contact's representation).
+  bool asymmetric() const { return !alpha_odd.empty() || !beta_odd.empty() || centre != 0; }
 
   /// The scale e of LineBasis::s_mapped for a scene: V tau/((1 + f) a_ref), the s at which the
   /// strips turn glassy ((1 + f) a/V tau = 1 with a ~ a_ref s near the ends, Eq. (37)).
@@ -83,10 +94,12 @@ struct LineShape {
     using std::sqrt;
     return !(scale > 0 && scale * sqrt(std::numeric_limits<Real>::epsilon()) < 1);
   }
-  /// a / (a_ref sqrt(1 - t^2)) at the ends y = +-l.
-  Real end_factor() const {
+  /// a / (a_ref sqrt(1 - t^2)) at the ends y = c +- l (side = +1, -1; the odd part's sign).
+  Real end_factor(int side = 1) const {
     using std::exp;
-    return exp(chebyshev(alpha, coordinate(basis, scale, Real(0))));
+    const Real u = coordinate(basis, scale, Real(0));
+    const Real odd = alpha_odd.empty() ? Real(0) : Real(side * chebyshev(alpha_odd, u));
+    return exp(chebyshev(alpha, u) + odd);
   }
 
   /// sum c_k T_k(u) by Clenshaw's recurrence.
@@ -116,11 +129,21 @@ struct LineShape {
     return c;
   }
 
-  /// 1 - t^2 from y without cancellation near the ends: (l - y)(l + y)/l^2.
-  Real one_minus_t2(Real y) const { return ((l - y) / l) * ((l + y) / l); }
+  /// 1 - t^2 from y without cancellation near the ends: (l - (y - c))(l + (y - c))/l^2.
+  Real one_minus_t2(Real y) const {
+    const Real yc = y - centre;
+    return ((l - yc) / l) * ((l + yc) / l);
+  }
+  /// t = (y - c)/l.
+  Real t_at(Real y) const { return (y - centre) / l; }
 
-  /// a(y) for |y| <= l.
-  Real a(Real y) const { return a_at(one_minus_t2(y)); }
+  /// a(y) for |y - c| <= l.
+  Real a(Real y) const {
+    using std::exp;
+    const Real w = one_minus_t2(y);
+    if (alpha_odd.empty() || !(w > 0)) return a_at(w);
+    return a_at(w) * exp(t_at(y) * chebyshev(alpha_odd, coordinate(basis, scale, w)));
+  }
   /// a at w = 1 - t^2 in [0, 1].
   Real a_at(Real w) const {
     using std::exp;
@@ -135,20 +158,33 @@ struct LineShape {
 
   /// The same a(y), b(y) (and l) expanded in `to` (with its scale) with n coefficients for ln a
   /// and n + 1 for b, by Chebyshev interpolation at the zeros of T_n and T_{n+1} in the new
-  /// variable.
+  /// variable; an asymmetric shape's odd parts (functions of w too, after the factor t) alike.
   LineShape reexpanded(LineBasis to, int n, Real to_scale = 0) const {
     const auto ln_a = [&](Real w) { return chebyshev(alpha, coordinate(basis, scale, w)); };
     const auto b_over = [&](Real w) { return b_at(w) / a_ref; };
-    return LineShape{a_ref,
-                     l,
-                     interpolate(to, to_scale, n, ln_a),
-                     interpolate(to, to_scale, n + 1, b_over),
-                     to,
-                     to_scale};
+    LineShape out{a_ref,
+                  l,
+                  interpolate(to, to_scale, n, ln_a),
+                  interpolate(to, to_scale, n + 1, b_over),
+                  to,
+                  to_scale};
+    if (asymmetric()) {
+      const auto a_odd = [&](Real w) { return chebyshev(alpha_odd, coordinate(basis, scale, w)); };
+      const auto b_odd = [&](Real w) { return chebyshev(beta_odd, coordinate(basis, scale, w)); };
+      out.alpha_odd = interpolate(to, to_scale, n, a_odd);
+      out.beta_odd = interpolate(to, to_scale, n + 1, b_odd);
+      out.centre = centre;
+    }
+    return out;
   }
 
-  /// b(y) for |y| <= l.
-  Real b(Real y) const { return b_at(one_minus_t2(y)); }
+  /// b(y) for |y - c| <= l.
+  Real b(Real y) const {
+    const Real w = one_minus_t2(y);
+    if (beta_odd.empty()) return b_at(w);
+    const Real u = coordinate(basis, scale, w > 0 ? w : Real(0));
+    return b_at(w) + a_ref * t_at(y) * chebyshev(beta_odd, u);
+  }
 };
 
 }  // namespace viscoroll

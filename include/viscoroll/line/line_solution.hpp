@@ -38,6 +38,9 @@ struct LineSolution {
   Real c1, vtau, f, compliance;
 
   Real l() const { return shape.l; }
+  /// The contact's ends c - l and c + l (-l and l for a symmetric contact).
+  Real y_minus() const { return shape.centre - shape.l; }
+  Real y_plus() const { return shape.centre + shape.l; }
   Real a(Real y) const { return shape.a(y); }
   Real b(Real y) const { return shape.b(y); }
   /// G(y) of Eq. (36); 0 for a static or elastic scene.
@@ -47,7 +50,7 @@ struct LineSolution {
   /// Q(y) of Eq. (46).
   Real q(Real y) const { return functions(y).q; }
 
-  /// The strip at y (|y| < l): Eqs. (32), (35) across the contact.
+  /// The strip at y (y_minus() < y < y_plus()): Eqs. (32), (35) across the contact.
   StripPressure<Real, Quadrature> strip(Real y) const {
     const auto s = functions(y);
     return StripPressure<Real, Quadrature>(c1, s.a, s.b, s.g, vtau, f, compliance);
@@ -55,24 +58,25 @@ struct LineSolution {
   /// p(x, y), Eq. (35); zero outside the contact.
   Real pressure(Real x, Real y) const {
     using std::abs;
-    if (!(abs(y) < shape.l)) return Real(0);
+    if (!(abs(y - shape.centre) < shape.l)) return Real(0);
     return strip(y).pressure(x);
   }
 
   /// F0(y) per unit load per length, the long-term compliance (1 + f) c (Eq. 47 with (52)).
   Real f0_per_load() const { return compliance * (1 + f); }
 
-  /// The contact along the roller at `stations` evenly spaced points inside (-l, l) (>= 1):
-  /// the load per unit length F0(y)/((1 + f) c) (Eq. 33 with (47): the strip's pseudo-pressure
-  /// integrates to (1 + f) c times its load), a(y), b(y), the strip's peak pressure (Eq. 35), the
-  /// ends -l, l and the peak of the load (docs/rollers.md).
+  /// The contact along the roller at `stations` evenly spaced points inside (y_minus, y_plus)
+  /// (>= 1): the load per unit length F0(y)/((1 + f) c) (Eq. 33 with (47): the strip's
+  /// pseudo-pressure integrates to (1 + f) c times its load), a(y), b(y), the strip's peak
+  /// pressure (Eq. 35), the ends and the peak of the load (docs/rollers.md).
   AlongRoller<Real> along_roller(int stations = 65) const {
     AlongRoller<Real> out;
-    out.y_minus = -shape.l;
-    out.y_plus = shape.l;
+    out.y_minus = y_minus();
+    out.y_plus = y_plus();
     const Real per_load = f0_per_load();
     for (int k = 1; k <= std::max(stations, 1); ++k) {
-      const Real y = shape.l * (Real(2 * k) / Real(std::max(stations, 1) + 1) - 1);
+      const Real y =
+          shape.centre + shape.l * (Real(2 * k) / Real(std::max(stations, 1) + 1) - 1);
       const auto s = functions(y);
       out.y.push_back(y);
       out.f0.push_back(s.f0 / per_load);
@@ -96,20 +100,23 @@ struct LineSolution {
 
 /// The line theory's domain (Section 3: the contact is slender, a(y) << l): a warning when
 /// l/a(0) < 3, and one when a(y) somewhere reaches l/3 (a(y) can exceed a(0), as at the dip of
-/// a(0) near V tau = 5 a0). a(y) is sampled at 65 points y = l k/64, k = 0..64. Empty inside it.
+/// a(0) near V tau = 5 a0). a(y) is sampled at 65 points y = l k/64, k = 0..64 (from the centre c
+/// both ways for an asymmetric contact, whose a(0) is read at c). Empty inside it.
 template <RealScalar Real>
 std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
   std::vector<std::string> warnings;
-  const Real l = shape.l, a0 = shape.a(Real(0));
+  const Real l = shape.l, a0 = shape.a(shape.centre);
   const Real aspect = l / a0;
   if (!(aspect >= 3))
     warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
                        " < 3: outside the line-contact theory's domain of validity");
   Real a_max = a0, y_max = 0;
-  for (int k = 1; k <= 64; ++k) {
-    const Real y = l * Real(k) / 64, a = shape.a(y);
-    if (a > a_max) a_max = a, y_max = y;
-  }
+  for (int k = 1; k <= 64; ++k)
+    for (int side : {1, -1}) {
+      if (side < 0 && !shape.asymmetric()) continue;
+      const Real y = shape.centre + side * (l * Real(k) / 64), a = shape.a(y);
+      if (a > a_max) a_max = a, y_max = y;
+    }
   if (a_max > a0 && !(l >= 3 * a_max))
     warnings.push_back("a(y) = " + std::to_string(double(a_max)) +
                        " at y = " + std::to_string(double(y_max)) +

@@ -179,15 +179,17 @@ class LineSolver {
   /// with converged == false and the reason.
   Solution solve(const LineScene<Real>& scene, const Solution* start = nullptr) const;
 
-  /// Solves the rolling line contact of a symmetric roller profile (roller/profile.hpp: a crowned
-  /// cylinder, a logarithmic crown, a symmetric table, the ellipsoid): (34) with the profile's
-  /// drop h(y) (docs/theory.md section 16, (RP1); for a spectrum, (RP5) with section 14), every
-  /// other equation as for the ellipsoid. The long-term and the glassy contact are the static
-  /// profile contact (static_profile_contact.hpp) of the long-term and of the instantaneous
-  /// compliance, expanded in the solver's representation; `a_long_term`, `l_long_term`,
-  /// `d_long_term` are the long-term one's a(0), l and d. Throws std::invalid_argument for an
-  /// invalid scene (LineProfileScene::validate); a contact that reaches the roller's body end, or
-  /// a static contact that does not converge, is returned not converged with the reason.
+  /// Solves the rolling line contact of a roller profile (roller/profile.hpp: a crowned
+  /// cylinder, a logarithmic crown, a table, the ellipsoid, any of them tilted): (34) with the
+  /// profile's drop h(y) (docs/theory.md section 16, (RP1); for a spectrum, (RP5) with section 14,
+  /// symmetric profiles only), every other equation as for the ellipsoid; an asymmetric profile's
+  /// contact is [c - l, c + l] with the odd parts of (RP6), (RP7). The long-term and the glassy
+  /// contact are the static profile contact (static_profile_contact.hpp) of the long-term and of
+  /// the instantaneous compliance, expanded in the solver's representation; `a_long_term`,
+  /// `l_long_term`, `d_long_term` are the long-term one's a at its centre, l and d. Throws
+  /// std::invalid_argument for an invalid scene (LineProfileScene::validate; for a spectrum
+  /// validate_symmetric); a contact that reaches the roller's body end, or a static contact that
+  /// does not converge, is returned not converged with the reason.
   /// Every profile is solved through its ProfileView (roller/profile.hpp), by solve_profile.
   template <RollerProfile Profile>
   Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
@@ -234,6 +236,7 @@ class LineSolver {
   static LineShape<Real> caller_shape(LineShape<Real> shape, const Units& u) {
     shape.a_ref = times_power_of_two(shape.a_ref, u.length);
     shape.l = times_power_of_two(shape.l, u.length);
+    shape.centre = times_power_of_two(shape.centre, u.length);
     return shape;
   }
 
@@ -283,12 +286,16 @@ class LineSolver {
     return Units{k1.m, Real(0), k1.e, binary<Real>(a0_caller).e};
   }
   /// A static profile contact as the solver's shape (unit a_ref given in the caller's units,
-  /// b = b_over a_ref) and penetration, in the units u.
+  /// b = b_over a_ref; with its odd parts and centre if `asymmetric`) and penetration, in the
+  /// units u.
   static std::pair<LineShape<Real>, Real> profile_in_units(const StaticProfileContact<Real>& s,
-                                                           const Units& u, Real a_ref, Real b_over) {
-    LineShape<Real> shape = profile_line_shape(s, a_ref, 2 * profile_static_terms, b_over);
+                                                           const Units& u, Real a_ref, Real b_over,
+                                                           bool asymmetric = false) {
+    LineShape<Real> shape =
+        profile_line_shape(s, a_ref, 2 * profile_static_terms, b_over, asymmetric);
     shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
     shape.l = times_power_of_two(shape.l, -u.length);
+    shape.centre = times_power_of_two(shape.centre, -u.length);
     return {std::move(shape), times_power_of_two(s.d, -(u.curvature + 2 * u.length))};
   }
   /// The solve of a profile whose long-term static contact did not converge: not converged, its
@@ -322,11 +329,14 @@ class LineSolver {
   template <class Profile>
   static void check_body_end(Solution& sol, const Profile& roller, const Units& u) {
     const Real l_caller = times_power_of_two(sol.shape.l, u.length);
-    if (sol.converged && !(l_caller < roller.y_max() && -l_caller > roller.y_min())) {
+    const Real c_caller = times_power_of_two(sol.shape.centre, u.length);
+    const Real y_plus = c_caller + l_caller, y_minus = c_caller - l_caller;
+    if (sol.converged && !(y_plus < roller.y_max() && y_minus > roller.y_min())) {
       sol.converged = false;
       sol.root = false;
-      sol.reason = "the contact reaches the roller's body end (l = " +
-                   detail::format_value(l_caller) + ", the body ends at y = " +
+      sol.reason = "the contact reaches the roller's body end (it spans y = " +
+                   detail::format_value(y_minus) + " ... " + detail::format_value(y_plus) +
+                   ", the body ends at y = " + detail::format_value(roller.y_min()) + " and " +
                    detail::format_value(roller.y_max()) + "): outside the line theory";
     }
   }
@@ -388,29 +398,32 @@ class LineSolver {
   /// iteration that stops short is run again from the cold start. The result's warnings say when
   /// a seed was set aside, so that a bad seed never decides the answer.
   /// `drop` the roller's h(y) (a RollerDrop), `cold` the cold start's shape and penetration
-  /// from the plane seed (ColdStart).
+  /// from the plane seed (ColdStart), `asymmetric` the contact of a drop that is not even
+  /// (LineResidual's).
   template <class Drop = ParabolicDrop, class ColdStart = EllipseStart>
   Solution rolling_from(const LineScene<Real>& scene, const Units& u,
                         const StaticLineContact<Real>& slow, const LineProblem<Real>& prob,
                         Real c, const Solution* given, const Drop& drop = {},
-                        const ColdStart& cold = {}) const {
-    if (given == nullptr) return rolling(scene, u, slow, prob, c, nullptr, drop, cold);
+                        const ColdStart& cold = {}, bool asymmetric = false) const {
+    if (given == nullptr)
+      return rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
     // The seed in the solver's units (a shape from a far scene may leave the range there).
     Solution seed = *given;
     seed.shape.a_ref = times_power_of_two(seed.shape.a_ref, -u.length);
     seed.shape.l = times_power_of_two(seed.shape.l, -u.length);
+    seed.shape.centre = times_power_of_two(seed.shape.centre, -u.length);
     seed.d = times_power_of_two(seed.d, -u.curvature - 2 * u.length);
     const Solution* start = &seed;
     if (!usable_seed(*start)) {
-      Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold);
+      Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
       again.warnings.push_back(
           "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
           "solved from the cold start");
       return again;
     }
-    Solution seeded = rolling(scene, u, slow, prob, c, start, drop, cold);
+    Solution seeded = rolling(scene, u, slow, prob, c, start, drop, cold, asymmetric);
     if (seeded.converged) return seeded;
-    Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold);
+    Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
     again.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
                              "): solved again from the cold start");
     return again;
@@ -464,7 +477,8 @@ class LineSolver {
   template <class Drop, class ColdStart>
   Solution rolling(const LineScene<Real>& scene, const Units& u,
                    const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
-                   const Solution* start, const Drop& drop, const ColdStart& cold) const {
+                   const Solution* start, const Drop& drop, const ColdStart& cold,
+                   bool asymmetric = false) const {
     using Residual = LineResidual<Real, Quadrature, ExteriorLeadingEdge, Drop>;
     const Real f = prob.f, vtau = prob.vtau;
     LineShape<Real> shape;
@@ -493,7 +507,7 @@ class LineSolver {
     int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
       const Residual res(prob, stages[k], options_.basis, options_.oversampling,
-                         Real(options_.quadrature_tolerance), drop);
+                         Real(options_.quadrature_tolerance), drop, asymmetric);
       Vector x = res.pack(shape, d);
       Vector r(res.equations());
       if (!res(x, r)) {
@@ -543,11 +557,12 @@ class LineSolver {
         // A root of the discrete equations that is not a contact (d, a(0) or l not positive;
         // found at folds, e.g. by the property test of errors.md) is reported, not returned as
         // converged.
-        if (sol.converged && !(sol.d > 0 && sol.a(Real(0)) > 0 && sol.l() > 0)) {
+        const Real a_centre = sol.a(sol.shape.centre);
+        if (sol.converged && !(sol.d > 0 && a_centre > 0 && sol.l() > 0)) {
           sol.converged = false;
           sol.reason = "a root of the line equations that is not a contact (d = " +
-                       detail::format_value(sol.d) + ", a(0) = " +
-                       detail::format_value(sol.a(Real(0))) + ", l = " +
+                       detail::format_value(sol.d) + ", a at the centre = " +
+                       detail::format_value(a_centre) + ", l = " +
                        detail::format_value(sol.l()) +
                        " in the solver's units of length; each must be positive)";
         }
@@ -562,10 +577,10 @@ class LineSolver {
         return sol;
       }
     }
-    return failure(u, slow, c, f, vtau,
-                   Residual(prob, options_.terms, options_.basis, options_.oversampling,
-                            Real(options_.quadrature_tolerance), drop),
-                   Vector::Zero(2 * options_.terms + 3), "no stage ran", iterations);
+    const Residual res(prob, options_.terms, options_.basis, options_.oversampling,
+                       Real(options_.quadrature_tolerance), drop, asymmetric);
+    return failure(u, slow, c, f, vtau, res, Vector::Zero(res.unknowns()), "no stage ran",
+                   iterations);
   }
 
   /// Where Levenberg-Marquardt stopped short of a root (at a minimum with no root near, without
@@ -648,14 +663,20 @@ class LineSolver {
 
   /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q) = (C1/4) strip_first_moment
   /// (Eq. 54 strip by strip in the form (P7); docs/theory.md section 4).
+  /// Over [0, l] for a symmetric contact (the ratio of two integrals over half of it), over both
+  /// halves of an asymmetric one (nodes at distances from its centre).
   static Real rolling_friction(const Solution& sol) {
     std::vector<Real> nodes, weights;
     const Real l = sol.shape.l;
     detail::append_graded_nodes<Quadrature>(nodes, weights, l, l / 2,
                                             l * std::numeric_limits<Real>::epsilon() * 16);
+    const bool both = sol.shape.asymmetric();
+    const std::size_t half = nodes.size();
     Real num = 0, den = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-      const auto s = sol.functions(nodes[j]);
+    for (std::size_t k = 0; k < (both ? 2 * half : half); ++k) {
+      const std::size_t j = k % half;
+      const Real y = both ? Real(sol.shape.centre + (k < half ? nodes[j] : -nodes[j])) : nodes[j];
+      const auto s = sol.functions(y);
       if (!(s.a > 0)) continue;
       const Real alpha = strip_alpha(s.a, sol.vtau, sol.f);
       const Real vn =
@@ -678,11 +699,13 @@ class LineSolver {
       if (!sol.converged) return times_power_of_two(x, exponent);
       return detail::representable(x, exponent, what, inputs, zero_allowed);
     };
-    const Real a_origin = sol.shape.a(Real(0)), b_origin = sol.shape.b(Real(0));
+    const Real centre = sol.shape.centre;  // 0 for a symmetric contact
+    const Real a_origin = sol.shape.a(centre), b_origin = sol.shape.b(centre);
     in(a_origin, length, "the half width a(0)", false);
     in(b_origin, length, "the offset b(0)", true);
     sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
     sol.shape.l = in(sol.shape.l, length, "the half length l", false);
+    sol.shape.centre = in(centre, length, "the contact's centre c", true);
     sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
     sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
     sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
@@ -720,7 +743,10 @@ class LineSolver {
     using std::log;
     using std::pow;
     constexpr bool ellipsoid = std::same_as<Scene, LineScene<Real>>;
-    scene.validate();
+    if constexpr (ellipsoid)
+      scene.validate();
+    else
+      scene.validate_symmetric();
     detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1,
                     "basis", int(options_.basis),
                     "LineBasis::t_squared with oversampling 1 for a material with a spectrum");
@@ -1066,6 +1092,8 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
   const PronyTerm<Real> memory = detail::single_memory_term(material_);
   const Real f = memory.f;
   const Real c1 = roller.c1();
+  // A drop that is not even (a tilt): the contact [c - l, c + l] with odd parts ((RP6), (RP7)).
+  const bool asymmetric = !roller.symmetric();
   const auto inputs = [&] {
     return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
            ", speed = " + detail::format_value(scene.speed) +
@@ -1080,7 +1108,7 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
   const Units u = profile_units(c1, a0_caller);
   const int d_unit = u.curvature + 2 * u.length;
   const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
-    return profile_in_units(s, u, a0_caller, b_over);
+    return profile_in_units(s, u, a0_caller, b_over, asymmetric);
   };
   const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
   const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
@@ -1117,7 +1145,8 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
           const LineScene<Real> plane{.c1 = c1, .c2 = Real(0), .load = scene.load,
                                       .speed = scene.speed};
           return rolling_from(plane, u, slow, prob, c, start,
-                              ProfileDrop<Profile>(roller, u.length, u.curvature), cold);
+                              ProfileDrop<Profile>(roller, u.length, u.curvature), cold,
+                              asymmetric);
         }
       }
     }
