@@ -5,7 +5,10 @@
 // at V tau/a0 = 0 (the long-term static limit), 0.1, 1, 10 and the glassy limit (10^4), a0 the
 // long-term static a(0); then the flat part 10 on the two- and the twenty-term spectra of the
 // spectrum validation (sum of f = 9, under (1 + F) c P = 0.3) at V = 0.01 ... 100; then the flat
-// part 10 and the logarithmic crown tilted by theta = 0.003 on the standard linear solid. Prints
+// part 10 and the logarithmic crown tilted by theta = 0.003 on the standard linear solid, and the
+// flat part 10 so tilted on the two- and the twenty-term spectra; last, whether the BEM limits the
+// F0 comparison: its rows at the grid and at twice the grid against each other and the line's
+// (flat parts 10 and 20, V tau/a0 = 0 and 10, the rows inside the contact). Prints
 // the tables of docs/validation.md ("Rolling rollers of any profile"): d, chi, a(0), b(0), the
 // contact's end y+, F0(0) and the edge peak f0_max/F0(0) of both, the largest difference of F0(y)
 // over the BEM's rows in units of its peak, and the line solve's wall time (for the tilted
@@ -125,6 +128,44 @@ void compare(const char* name, const Material& m, double creep_ratio, const Prof
   }
 }
 
+/// The largest |F0| differences over the rows inside the contact (not the first and last) of the
+/// BEM at `grid`, in units of its peak: against the BEM at 2 grid (its rows interpolated linearly
+/// to the same y) and the line's against the latter.
+void grid_check(const char* name, double flat, double v, int grid, int terms) {
+  const viscoroll::StandardLinearSolid<double> m(1.0, 0.5, 2.0, 1.0);
+  const double load = 0.3 / (3 * m.instantaneous_compliance());
+  const viscoroll::CrownedCylinder<double> roller(1.0, flat, 20.0);
+  using Scene = viscoroll::LineProfileScene<viscoroll::CrownedCylinder<double>>;
+  const viscoroll::LineSolverD line(m, viscoroll::LineOptions{.terms = terms});
+  const double a0 = line.solve(Scene{roller, load, 0.0}).shape.a(0.0);
+  const auto s = line.solve(Scene{roller, load, v * a0});
+  const auto bem = [&](int g) {
+    viscoroll::BemOptions options;
+    options.grid = g;
+    return viscoroll::BemSolver(m, options)
+        .solve(viscoroll::bem_scene(roller, m, load, v * a0))
+        .along_roller();
+  };
+  const auto coarse = bem(grid), fine = bem(2 * grid);
+  const auto at = [&](double y) {
+    for (std::size_t i = 0; i + 1 < fine.y.size(); ++i)
+      if (fine.y[i] <= y && y <= fine.y[i + 1]) {
+        const double w = (y - fine.y[i]) / (fine.y[i + 1] - fine.y[i]);
+        return fine.f0[i] * (1 - w) + fine.f0[i + 1] * w;
+      }
+    return 0.0;
+  };
+  double bem_change = 0, line_error = 0, where = 0;
+  for (std::size_t i = 1; i + 1 < coarse.y.size(); ++i) {
+    const double y = coarse.y[i], reference = at(y);
+    bem_change = std::max(bem_change, std::abs(coarse.f0[i] - reference));
+    const double e = std::abs(load_per_length(s, 0.0, y) - reference);
+    if (e > line_error) line_error = e, where = y;
+  }
+  std::printf("| %s | %g | %.2f%% | %.2f%% | %.2f |\n", name, v, 100 * bem_change / coarse.f0_max,
+              100 * line_error / coarse.f0_max, where);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -163,4 +204,17 @@ int main(int argc, char** argv) {
   compare("log16_tilted", sls, 2.0,
           viscoroll::Tilted(viscoroll::LogarithmicCrown<double>(1.0, 16.0, 0.2), theta), in_a0,
           true, grid, terms, "");
+  compare("two terms tilted", viscoroll::PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}}),
+          9.0, viscoroll::Tilted(flat10, theta), speeds, false, grid, terms, "");
+  compare("twenty terms tilted", viscoroll::PronyCreep<double>(1.0, 0.5, twenty), 9.0,
+          viscoroll::Tilted(flat10, theta), speeds, false, grid, terms, "");
+  std::printf(
+      "\nThe BEM's rows at grid %d against grid %d (interior rows, units of the peak):\n\n"
+      "| roller | V tau/a0 | BEM change | line against the finer BEM | at y |\n"
+      "|---|---|---|---|---|\n",
+      grid, 2 * grid);
+  for (const double v : {0.0, 10.0}) {
+    grid_check("flat10", 10.0, v, grid, terms);
+    grid_check("flat20", 20.0, v, grid, terms);
+  }
 }

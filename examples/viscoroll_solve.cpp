@@ -7,7 +7,7 @@
 // bem continuing from the previous converged solution of the chunk (any thread count, same result).
 // --method plane: Hunter's plane problem (load per unit length, c2 ignored).
 // --method line: the line-contact solver (--grid N the Chebyshev terms, default 6) for the
-// ellipsoid or an untilted symmetric roller of finite length (crowned, logarithmic, table) on any
+// ellipsoid or a roller of finite length (crowned, logarithmic, table; tilted or not) on any
 // material; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
 // (the peak of the load along the roller), d, l0, d0 (the static long-term l and d), terms,
 // reason and warnings. --profile-out writes the contact along the roller of each line or bem
@@ -782,8 +782,7 @@ int line_terms(const Problem& p) {
 /// The line-contact (3-D) solver; for each tau (a prony material: each temperature) the speeds
 /// are swept by viscoroll::sweep: in chunks of 16 in the given order, each speed seeded with the
 /// previous converged iterated solution of its chunk (continuation; a closed form carries no more
-/// than the solver's own seed). A roller of finite length (tilted or asymmetric on a standard
-/// linear solid, untilted and symmetric on a spectrum: check_scene_for_method) is solved by
+/// than the solver's own seed). A roller of finite length (tilted or not) is solved by
 /// LineSolver::solve(LineProfileScene), on a spectrum by docs/theory.md (RP5); the ellipsoid by
 /// LineSolver::solve(LineScene).
 int run_line(const Problem& p, Output& out) {
@@ -843,7 +842,7 @@ int run_line(const Problem& p, Output& out) {
   if (p.roller)
     return std::visit(
         [&](const auto& tilted) {
-          // Tilted (a standard linear solid's asymmetric contact) or not (check_scene_for_method).
+          // Tilted (the asymmetric contact, docs/theory.md section 16) or not.
           using Profile = std::decay_t<decltype(tilted)>;
           return run([&](double speed) {
             return viscoroll::LineProfileScene<Profile>{

@@ -1,6 +1,6 @@
 // The library's roller profile (roller/profile.hpp) of a scene file's roller of finite length,
 // shared by viscoroll-solve and the Python bindings: the bem and line methods take it tilted
-// (viscoroll::Tilted; the line method on a prony material untilted, check_scene_for_method).
+// (viscoroll::Tilted).
 #pragma once
 
 #include <utility>

@@ -102,8 +102,8 @@ struct TableProfile {
 using RollerProfile = std::variant<EllipsoidProfile, CylinderProfile, CrownedProfile,
                                    LogarithmicProfile, TableProfile>;
 
-/// The profiles of a roller of finite length, which the bem method takes, and the line method
-/// untilted and symmetric (docs/rollers.md).
+/// The profiles of a roller of finite length, which the bem and line methods take, tilted or not
+/// (docs/rollers.md).
 inline bool is_axial_profile(const RollerProfile& r) {
   return std::holds_alternative<CrownedProfile>(r) ||
          std::holds_alternative<LogarithmicProfile>(r) || std::holds_alternative<TableProfile>(r);
@@ -677,20 +677,10 @@ inline double roller_tilt(const RollerProfile& r) {
       r);
 }
 
-/// The first k at which a table is not symmetric about y = 0 (y[k] = -y[n-1-k] and h[k] =
-/// h[n-1-k], the rule of TabulatedProfile::symmetric), or nothing.
-inline std::optional<std::size_t> table_asymmetry(const TableProfile& t) {
-  const std::size_t n = t.y.size();
-  for (std::size_t k = 0; k < n; ++k)
-    if (t.y[k] != -t.y[n - 1 - k] || t.h[k] != t.h[n - 1 - k]) return k;
-  return std::nullopt;
-}
-
 /// Checks what depends on the method: the cylinder is the plane method's roller only; a roller
-/// of finite length (crowned, logarithmic, table) is the bem's and the line method's, the line
-/// method's tilted or asymmetric on a material of one relaxation time, untilted and symmetric on
-/// a prony material (LineSolver::solve(LineProfileScene); a spectrum by docs/theory.md (RP5),
-/// which is symmetric); the line method needs a slender
+/// of finite length (crowned, logarithmic, table; tilted or not) is the bem's and the line
+/// method's, on any material (LineSolver::solve(LineProfileScene), of a spectrum by
+/// docs/theory.md (RP5)); the line method needs a slender
 /// contact (0 < c2 < 8 e^-3 c1, LineScene::validate), the bem method 1e-10 <= c2/c1 <= 1e10
 /// (BemScene::validate); the file's grid, its method's range.
 inline void check_scene_for_method(const Scene& scene, Method method, const std::string& source) {
@@ -702,25 +692,6 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
     const std::string profile = "roller.profile = \"" + roller_profile_name(scene.roller) + "\"";
     if (method == Method::plane)
       fail(profile + " suits the line and bem methods, not plane (docs/rollers.md)");
-    if (method == Method::line && std::holds_alternative<PronyModel>(scene.material)) {
-      if (const double tilt = roller_tilt(scene.roller); tilt != 0)
-        fail("roller.tilt = " + scene_detail::shortest(tilt) +
-             " is outside the valid range tilt = 0 for the line method on a prony material (its "
-             "contact is symmetric about y = 0 there; the line method on a standard linear solid "
-             "and the bem method take any |tilt| < 0.1 rad)");
-      if (const auto* t = std::get_if<TableProfile>(&scene.roller))
-        if (const auto k = table_asymmetry(*t)) {
-          const std::size_t j = t->y.size() - 1 - *k;
-          fail("roller.y, roller.h of " + profile +
-               " are not symmetric about y = 0 (the line method on a prony material needs y[k] = "
-               "-y[n-1-k] and h[k] = h[n-1-k] for every k; k = " + std::to_string(*k) + ": y = " +
-               scene_detail::shortest(t->y[*k]) + ", h = " + scene_detail::shortest(t->h[*k]) +
-               " against y[" + std::to_string(j) + "] = " + scene_detail::shortest(t->y[j]) +
-               ", h = " + scene_detail::shortest(t->h[j]) +
-               "); the line method on a standard linear solid and the bem method take any "
-               "table");
-        }
-    }
   }
   if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)
     fail("roller.profile = \"cylinder\" suits the plane method only, not " + m +

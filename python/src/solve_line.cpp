@@ -1,8 +1,7 @@
 // viscoroll's Python module: the line-contact solver behind solve_line and sweep_line, over the
 // standard linear solid (LineSolverD) or a Prony series (LineSolver over PronyRelaxation, the
 // line theory for a spectrum), for the ellipsoid (LineScene) or a scene file's roller of finite
-// length (LineProfileScene: tilted or asymmetric on the standard linear solid, untilted and
-// symmetric on a spectrum, docs/theory.md (RP5); check_scene_for_method). The fields
+// length (LineProfileScene, tilted or not; on a spectrum docs/theory.md (RP5)). The fields
 // are those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
 #include <stdexcept>
 #include <utility>
@@ -90,8 +89,7 @@ LineScene<double> line_scene(const SceneSpec& scene, double speed) {
   return s;
 }
 
-/// The scene of a roller of finite length (`profile`, tilted or not: check_scene_for_method) at
-/// `speed`.
+/// The scene of a roller of finite length (`profile`, tilted or not) at `speed`.
 template <class Profile>
 LineProfileScene<Profile> profile_scene(Profile profile, const SceneSpec& scene, double speed) {
   LineProfileScene<Profile> s{.roller = std::move(profile), .load = scene.load, .speed = speed};
@@ -100,7 +98,7 @@ LineProfileScene<Profile> profile_scene(Profile profile, const SceneSpec& scene,
 }
 
 /// f(profile) with the library profile of the scene's roller of finite length in its tilt
-/// (Tilted; tilt 0 on a spectrum, check_scene_for_method).
+/// (Tilted).
 template <class F>
 auto with_profile(const SceneSpec& scene, F f) {
   return cli::visit_axial_profile(*scene.roller.axial, [&](auto profile, double tilt) {

@@ -128,3 +128,26 @@ def test_an_elastic_scene_matches_the_command_line(viscoroll_solve, tmp_path, me
         result = vr.solve(scene, method=method, grid=grid, speed=1.0)
         compare(expected, result.as_dict(), f"elastic {method}")
         assert result.tau == 0.0
+
+
+@pytest.mark.parametrize("file", ["crowned_roller_line.json", "crowned_roller_prony_line.json"])
+def test_a_tilted_roller_matches_the_command_line_and_mirrors(viscoroll_solve, scenes_dir,
+                                                              tmp_path, file):
+    """The shipped crowned roller misaligned by +-2 mrad (the asymmetric contact of the line
+    method, docs/rollers.md "Tilt"): every field as the command line's, and the opposite tilt
+    mirrors the ends to the iteration's tolerance (4 eps^0.6, tests/line/line_profile_tilt)."""
+    document = json.loads((scenes_dir / file).read_text())
+    ends = {}
+    for tilt in (0.002, -0.002):
+        document["roller"]["tilt"] = tilt
+        path = tmp_path / f"tilt{tilt}.json"
+        path.write_text(json.dumps(document))
+        (expected,) = run_cli(viscoroll_solve, path, None, None, [0.1])
+        result = vr.solve(vr.Scene.from_json(path), speed=0.1)
+        compare(expected, result.as_dict(), f"{file} tilt {tilt}")
+        assert result.converged
+        ends[tilt] = (result.y_minus, result.y_plus)
+    tolerance = 4 * np.finfo(float).eps ** 0.6 * (ends[0.002][1] - ends[0.002][0])
+    assert ends[0.002][0] + ends[0.002][1] < 0  # the load moves to the side pressed harder
+    assert abs(ends[0.002][0] + ends[-0.002][1]) < tolerance
+    assert abs(ends[0.002][1] + ends[-0.002][0]) < tolerance

@@ -37,16 +37,6 @@ struct LineProfileScene {
     detail::require_positive("load", load);
     detail::require_non_negative("speed", speed);
   }
-  /// validate(), and the profile symmetric (h(-y) = h(y)): the line solver for a spectrum
-  /// (LineSpectrumResidual) collocates on y > 0 only; a tilted or asymmetric roller on a spectrum
-  /// is solved by BemSolver (bem_profile.hpp).
-  void validate_symmetric() const {
-    validate();
-    detail::require(roller.symmetric(), "roller", 0,
-                    "a symmetric profile (h(-y) = h(y), no tilt) for the line solver on a material "
-                    "with several relaxation times; a tilted or asymmetric roller on such a "
-                    "material is solved by BemSolver (bem_profile.hpp)");
-  }
 };
 
 /// The RollerDrop of a profile in the line solver's units: lengths in 2^length, curvatures in

@@ -74,8 +74,8 @@ struct ExteriorLeadingEdge {
 /// The roller's drop h(y) along its axis in (34), a policy of the line residuals (LineResidual,
 /// LineSpectrumResidual): a D provides `Real drop(const Problem&, Real y) const` and
 /// `Real drop_slope(const Problem&, Real y) const`, h(y) and h'(y) in the residual's units inside
-/// the contact; h even in y unless the residual is asymmetric (LineResidual's `asymmetric`: the
-/// others collocate on y > 0); Problem the residual's constants (LineProblem,
+/// the contact; h even in y unless the residual is asymmetric (the residuals' `asymmetric`:
+/// else they collocate on y > 0); Problem the residual's constants (LineProblem,
 /// LineSpectrumProblem). Models: ParabolicDrop (the paper's Eq. 27, from the problem's c2) and
 /// ProfileDrop (line_profile.hpp, a RollerProfile).
 template <class D, class Real, class Problem = LineProblem<Real>>

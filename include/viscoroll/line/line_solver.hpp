@@ -181,15 +181,14 @@ class LineSolver {
 
   /// Solves the rolling line contact of a roller profile (roller/profile.hpp: a crowned
   /// cylinder, a logarithmic crown, a table, the ellipsoid, any of them tilted): (34) with the
-  /// profile's drop h(y) (docs/theory.md section 16, (RP1); for a spectrum, (RP5) with section 14,
-  /// symmetric profiles only), every other equation as for the ellipsoid; an asymmetric profile's
-  /// contact is [c - l, c + l] with the odd parts of (RP6), (RP7). The long-term and the glassy
-  /// contact are the static profile contact (static_profile_contact.hpp) of the long-term and of
-  /// the instantaneous compliance, expanded in the solver's representation; `a_long_term`,
-  /// `l_long_term`, `d_long_term` are the long-term one's a at its centre, l and d. Throws
-  /// std::invalid_argument for an invalid scene (LineProfileScene::validate; for a spectrum
-  /// validate_symmetric); a contact that reaches the roller's body end, or a static contact that
-  /// does not converge, is returned not converged with the reason.
+  /// profile's drop h(y) (docs/theory.md section 16, (RP1); for a spectrum, (RP5) with section 14),
+  /// every other equation as for the ellipsoid; an asymmetric profile's contact is [c - l, c + l]
+  /// with the odd parts of (RP6), (RP7). The long-term and the glassy contact are the static
+  /// profile contact (static_profile_contact.hpp) of the long-term and of the instantaneous
+  /// compliance, expanded in the solver's representation; `a_long_term`, `l_long_term`,
+  /// `d_long_term` are the long-term one's a at its centre, l and d. Throws std::invalid_argument
+  /// for an invalid scene (LineProfileScene::validate); a contact that reaches the roller's body
+  /// end, or a static contact that does not converge, is returned not converged with the reason.
   /// Every profile is solved through its ProfileView (roller/profile.hpp), by solve_profile.
   template <RollerProfile Profile>
   Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
@@ -733,7 +732,7 @@ class LineSolver {
   /// compliance; not started ones, strip_is_glassy, dropped); none active: the static closed
   /// form of the remaining compliance; one: the standard linear solid (the paper's theory, the
   /// same digits as LineSolver over that material); two or more: LineSpectrumResidual. Scene: a
-  /// LineScene (the paper's ellipsoid) or a LineProfileScene (a symmetric roller profile, whose
+  /// LineScene (the paper's ellipsoid) or a LineProfileScene (a roller profile, whose
   /// static contacts are static_profile_contact's and whose drop enters (34), (RP5)). `start`
   /// seeds the iteration only where the one from the cold start stops short.
   template <class Scene>
@@ -743,10 +742,7 @@ class LineSolver {
     using std::log;
     using std::pow;
     constexpr bool ellipsoid = std::same_as<Scene, LineScene<Real>>;
-    if constexpr (ellipsoid)
-      scene.validate();
-    else
-      scene.validate_symmetric();
+    scene.validate();
     detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1,
                     "basis", int(options_.basis),
                     "LineBasis::t_squared with oversampling 1 for a material with a spectrum");
@@ -775,6 +771,9 @@ class LineSolver {
     Units u;
     StaticLineContact<Real> slow;
     std::optional<StaticProfileContact<Real>> slow_profile;  // a profile's, in the caller's units
+    // A profile whose drop is not even (a tilt): the asymmetric contact ((RP5) with (RP7)).
+    bool asymmetric = false;
+    if constexpr (!ellipsoid) asymmetric = !scene.roller.symmetric();
     if constexpr (ellipsoid) {
       const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
       const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
@@ -790,7 +789,7 @@ class LineSolver {
       if (!slow_profile->converged) return profile_static_failure(*slow_profile, c, Real(0));
       const Real a0_caller = slow_profile->a(slow_profile->centre());
       u = profile_units(c1, a0_caller);
-      const auto in_units = profile_in_units(*slow_profile, u, a0_caller, Real(0));
+      const auto in_units = profile_in_units(*slow_profile, u, a0_caller, Real(0), asymmetric);
       slow = {in_units.first.a_ref, in_units.first.l, in_units.second};
     }
     // Classify the terms (lengths in units). Relaxed: V tau_k <= sqrt(eps) a0 moves a, b and
@@ -871,7 +870,7 @@ class LineSolver {
       eff_profile = static_profile_contact(scene.roller, eff_load, profile_static_terms);
       if (!eff_profile->converged) return profile_static_failure(*eff_profile, c, Real(0));
       eff_a0 = eff_profile->a(eff_profile->centre());
-      const auto in_units = profile_in_units(*eff_profile, u, eff_a0, Real(0));
+      const auto in_units = profile_in_units(*eff_profile, u, eff_a0, Real(0), asymmetric);
       eff = {in_units.first.a_ref, in_units.first.l, in_units.second};
       load_target = times_power_of_two(eff_load, -(u.curvature + 3 * u.length));
     }
@@ -889,6 +888,7 @@ class LineSolver {
         shape = seed->shape;
         shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
         shape.l = times_power_of_two(shape.l, -u.length);
+        shape.centre = times_power_of_two(shape.centre, -u.length);
         moments = seed->moments;
         d = times_power_of_two(seed->d, -u.curvature - 2 * u.length);
       } else {
@@ -918,7 +918,7 @@ class LineSolver {
           const auto at_load =
               static_profile_contact(scene.roller, eff_load * A * A, profile_static_terms);
           std::tie(shape, d) = profile_in_units(at_load.converged ? at_load : *eff_profile, u,
-                                                eff_a0, ps.b / eff.a0);
+                                                eff_a0, ps.b / eff.a0, asymmetric);
         }
       }
       const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
@@ -938,7 +938,8 @@ class LineSolver {
       const std::vector<int> stages = continuation_stages(options_.terms);
       for (std::size_t k = 0; k < stages.size(); ++k) {
         const int n = stages[k];
-        last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop);
+        last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop,
+                     asymmetric);
         Vector x = last->pack(shape, moments, d);
         r.resize(last->equations());
         if (!(*last)(x, r)) {
@@ -977,11 +978,11 @@ class LineSolver {
       sol.l_long_term = slow.l;
       sol.d_long_term = slow.d;
       sol.load_compliance = c_eff * (1 + lengths.creep_ratio);
-      if (sol.converged && !(sol.d > 0 && shape.a(Real(0)) > 0 && shape.l > 0)) {
+      if (sol.converged && !(sol.d > 0 && shape.a(shape.centre) > 0 && shape.l > 0)) {
         sol.converged = false;
         sol.root = false;
-        sol.reason =
-            "a root of the line equations that is not a contact (d, a(0) or l not positive)";
+        sol.reason = "a root of the line equations that is not a contact (d, a at the centre or l "
+                     "not positive)";
       }
       if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
       if (sol.converged && !sol.root) sol.warnings.push_back(minimum_warning(rmax));

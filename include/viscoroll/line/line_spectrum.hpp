@@ -6,7 +6,8 @@
 // the line form (L6) at lambda_k of Q_k = F0 - F1/lambda_k (S12); the interior equation (34)
 // gains the spectrum's constant (S13). The strip's unknowns (U_i, W_i, b) are eliminated at each
 // collocation point by its linear system, so the global unknowns do not grow with M: ln a(y) and
-// b(y) as in line_shape.hpp, and two more even functions of y, gamma = G0/a^2 and the strip
+// b(y) as in line_shape.hpp, and two more functions of y (even, with odd parts for a tilted
+// roller's asymmetric contact), gamma = G0/a^2 and the strip
 // centroid kappa (the first moment), which carry F0 = C1 a^2 (1/4 + gamma/2) and
 // F1 = F0 (b + kappa + sum mu_i) to the line integrals (S14). The equations at each collocation
 // point: (34) with the spectrum's constant, and the strip's b, G0/a^2 and centroid equal to the
@@ -45,19 +46,33 @@ struct LineSpectrumProblem {
   Real a_ref, l_ref, load_target;
 };
 
-/// The even functions gamma(y) = G0/a^2 and kappa(y)/a_ref of the spectrum's line solution,
-/// Chebyshev series in u = 2 t^2 - 1, t = y/l (docs/theory.md (S14)).
+/// The functions gamma(y) = G0/a^2 and kappa(y)/a_ref of the spectrum's line solution,
+/// Chebyshev series in u = 2 t^2 - 1, t = (y - c)/l (docs/theory.md (S14)): even, plus for an
+/// asymmetric contact the odd parts t sum gamma_odd_k T_k(u), t sum kappa_odd_k T_k(u) (as
+/// line_shape.hpp's; empty otherwise).
 template <RealScalar Real>
 struct LineSpectrumMoments {
   std::vector<Real> gamma, kappa;
+  std::vector<Real> gamma_odd{}, kappa_odd{};
   Real gamma_at(Real u) const { return LineShape<Real>::chebyshev(gamma, u); }
   Real kappa_at(Real u) const { return LineShape<Real>::chebyshev(kappa, u); }
+  /// gamma and kappa/a_ref at u with their odd parts at t.
+  Real gamma_at(Real u, Real t) const {
+    if (gamma_odd.empty()) return gamma_at(u);
+    return gamma_at(u) + t * LineShape<Real>::chebyshev(gamma_odd, u);
+  }
+  Real kappa_at(Real u, Real t) const {
+    if (kappa_odd.empty()) return kappa_at(u);
+    return kappa_at(u) + t * LineShape<Real>::chebyshev(kappa_odd, u);
+  }
 };
 
 /// Residual of the spectrum's line equations at N + 1 collocation points (Chebyshev points in u).
 /// Unknowns (4N + 5): alpha_0..alpha_{N-1} (ln a), beta_0..beta_N (b / a_ref), gamma_0..gamma_N,
 /// kappa_0..kappa_N, ln(l / l_ref), d / (C1 a_ref^2). Equations (4N + 5): at each point (34) with
 /// (S13), b, G0/a^2 and the centroid of the strip (S12) minus the expanded ones, then the load.
+/// Asymmetric (a drop that is not even, docs/theory.md (RP5) with (RP7)): the points +-t_i, and
+/// after those unknowns the odd parts' coefficients (N, N + 1, N + 1, N + 1) and c / l_ref.
 /// A least-squares problem for numerics::levenberg_marquardt, with a semi-analytic Jacobian.
 /// `Drop`: the roller's h(y) in (34) (a RollerDrop, line_residual.hpp; the paper's C2 y^2/2 by
 /// default).
@@ -72,10 +87,15 @@ class LineSpectrumResidual {
   /// basis: the expansion variable of every series (LineBasis::s_mapped with scale
   /// mu_1/a_ref resolves the end layers where a(y) falls to the relaxation lengths).
   /// tolerance: the relative accuracy of every integral (LineNodeRule; 0: the scalar's epsilon).
+  /// asymmetric: the contact [c - l, c + l] with odd parts (LineResidual's).
   LineSpectrumResidual(LineSpectrumProblem<Real> problem, int terms,
                        LineBasis basis = LineBasis::t_squared, Real tolerance = Real(0),
-                       Drop drop = Drop{})
-      : p_(std::move(problem)), drop_(std::move(drop)), n_(terms), basis_(basis) {
+                       Drop drop = Drop{}, bool asymmetric = false)
+      : p_(std::move(problem)),
+        drop_(std::move(drop)),
+        n_(terms),
+        asymmetric_(asymmetric),
+        basis_(basis) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     using std::cos;
     using std::sqrt;
@@ -102,11 +122,13 @@ class LineSpectrumResidual {
     }
     rule_.emplace(basis_, scale_, terms, lam[0], lam[0] / mu[0] - 1, tolerance);
     const Real pi = boost::math::constants::pi<Real>();
-    const int m = points();
+    const int m = n_ + 1;
     for (int i = 1; i <= m; ++i) {
       const Real v = cos(pi * Real(2 * i - 1) / Real(2 * m));
       t_.push_back(sqrt(1 - LineShape<Real>::one_minus_t2_at(basis_, scale_, v)));
     }
+    if (asymmetric_)
+      for (int i = 0; i < m; ++i) t_.push_back(-t_[i]);
   }
 
   /// lambda_k / a_ref below which a term's leading-edge condition is the strip's own (S16).
@@ -115,8 +137,9 @@ class LineSpectrumResidual {
   int line_terms() const { return int(std::count(line_term_.begin(), line_term_.end(), true)); }
 
   int terms() const { return n_; }
-  int points() const { return n_ + 1; }
-  int unknowns() const { return 4 * n_ + 5; }
+  int points() const { return (n_ + 1) * (asymmetric_ ? 2 : 1); }
+  int unknowns() const { return 4 * n_ + 5 + (asymmetric_ ? 4 * n_ + 4 : 0); }
+  bool asymmetric() const { return asymmetric_; }
   int equations() const { return 4 * points() + 1; }
   const LineSpectrumProblem<Real>& problem() const { return p_; }
 
@@ -125,6 +148,11 @@ class LineSpectrumResidual {
     LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[4 * n_ + 3]), {}, {}, basis_, scale_};
     for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
     for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
+    if (asymmetric_) {
+      for (int k = 0; k < n_; ++k) s.alpha_odd.push_back(x[odd() + k]);
+      for (int k = 0; k <= n_; ++k) s.beta_odd.push_back(x[odd() + n_ + k]);
+      s.centre = x[centre_index()] * p_.l_ref;
+    }
     return s;
   }
   LineSpectrumMoments<Real> moments(const Vector& x) const {
@@ -132,6 +160,10 @@ class LineSpectrumResidual {
     for (int k = 0; k <= n_; ++k) {
       m.gamma.push_back(x[2 * n_ + 1 + k]);
       m.kappa.push_back(x[3 * n_ + 2 + k]);
+      if (asymmetric_) {
+        m.gamma_odd.push_back(x[odd() + 2 * n_ + 1 + k]);
+        m.kappa_odd.push_back(x[odd() + 3 * n_ + 2 + k]);
+      }
     }
     return m;
   }
@@ -154,6 +186,17 @@ class LineSpectrumResidual {
     for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k) x[3 * n_ + 2 + k] = mo.kappa[k] * ratio;
     x[4 * n_ + 3] = log(s.l / p_.l_ref);
     x[4 * n_ + 4] = d / (p_.c1 * p_.a_ref * p_.a_ref);
+    if (asymmetric_) {
+      const int o = odd();
+      for (int k = 0; k < n_ && k < int(s.alpha_odd.size()); ++k) x[o + k] = s.alpha_odd[k];
+      for (int k = 0; k <= n_ && k < int(s.beta_odd.size()); ++k)
+        x[o + n_ + k] = s.beta_odd[k] * ratio;
+      for (int k = 0; k <= n_ && k < int(mo.gamma_odd.size()); ++k)
+        x[o + 2 * n_ + 1 + k] = mo.gamma_odd[k];
+      for (int k = 0; k <= n_ && k < int(mo.kappa_odd.size()); ++k)
+        x[o + 3 * n_ + 2 + k] = mo.kappa_odd[k] * ratio;
+      x[centre_index()] = s.centre / p_.l_ref;
+    }
     return x;
   }
 
@@ -167,8 +210,10 @@ class LineSpectrumResidual {
     const Real a = s.a(y);
     if (!(a > 0)) return {Real(0), s.b(y), Real(0), Real(0), Real(0)};
     const Real u = LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(y));
-    const Real gamma = mo.gamma_at(u);
-    return {a, s.b(y), gamma, mo.kappa_at(u) * p_.a_ref, p_.c1 * a * a * (Real(1) / 4 + gamma / 2)};
+    const Real t = s.t_at(y);
+    const Real gamma = mo.gamma_at(u, t);
+    return {a, s.b(y), gamma, mo.kappa_at(u, t) * p_.a_ref,
+            p_.c1 * a * a * (Real(1) / 4 + gamma / 2)};
   }
   Real q(const Functions& f, std::size_t k) const {
     return f.f0 * (1 - (f.b + f.kappa) / p_.lengths.retardation[k]);
@@ -187,49 +232,73 @@ class LineSpectrumResidual {
     return evaluate(x, r, &jac) && jac.allFinite();
   }
 
-  /// int_{-l}^{l} F0 dy (Eq. 47).
+  /// int F0 dy over the contact (Eq. 47): twice one half, or both halves of an asymmetric one.
   Real load(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
-    std::vector<Real> nodes, weights;
-    rule_->load(s, nodes, weights);
-    Real sum = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j) sum += weights[j] * functions(s, mo, nodes[j]).f0;
-    return 2 * sum;
+    Real total = 0;
+    over_halves(s, [&](Real y, Real w) { total += w * functions(s, mo, y).f0; });
+    return asymmetric_ ? total : 2 * total;
   }
 
-  /// int_{-l}^{l} F0 (b + kappa) dy / int F0 dy: the pressure's centroid from the axis, chi / C1
-  /// (Eq. 51 strip by strip, (S10), (S15)).
+  /// int F0 (b + kappa) dy / int F0 dy over the contact: the pressure's centroid from the axis,
+  /// chi / C1 (Eq. 51 strip by strip, (S10), (S15)).
   Real centroid(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
-    std::vector<Real> nodes, weights;
-    rule_->load(s, nodes, weights);
     Real num = 0, den = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-      const Functions f = functions(s, mo, nodes[j]);
-      num += weights[j] * f.f0 * (f.b + f.kappa);
-      den += weights[j] * f.f0;
-    }
+    over_halves(s, [&](Real y, Real w) {
+      const Functions f = functions(s, mo, y);
+      num += w * f.f0 * (f.b + f.kappa);
+      den += w * f.f0;
+    });
     return num / den;
   }
 
  private:
-  /// T_0(u) ... T_N(u) into t (N + 1 values).
-  void chebyshev_values(Real u, Real* t) const {
+  /// Where the asymmetric contact's unknowns start (the odd parts), and c / l_ref.
+  int odd() const { return 4 * n_ + 5; }
+  int centre_index() const { return 8 * n_ + 8; }
+
+  /// f(y, w) at the load rule's nodes (distances from the centre) on [0, l], or on both halves
+  /// of an asymmetric contact (y = c +- node).
+  template <class F>
+  void over_halves(const LineShape<Real>& s, F f) const {
+    std::vector<Real> nodes, weights;
+    for (int side : {1, -1}) {
+      nodes.clear();
+      weights.clear();
+      rule_->load(s, nodes, weights, side);
+      for (std::size_t j = 0; j < nodes.size(); ++j)
+        f(asymmetric_ ? Real(s.centre + side * nodes[j]) : nodes[j], weights[j]);
+      if (!asymmetric_) return;
+    }
+  }
+
+  /// T_0(u) ... T_N(u) into t (N + 1 values), then, for an asymmetric contact, t_y times them
+  /// (t_y = (y - c)/l, the odd parts' factor).
+  void chebyshev_values(Real u, Real* t, Real t_y = 0) const {
     t[0] = 1;
     if (n_ >= 1) t[1] = u;
     for (int k = 2; k <= n_; ++k) t[k] = 2 * u * t[k - 1] - t[k - 2];
+    if (asymmetric_)
+      for (int k = 0; k <= n_; ++k) t[n_ + 1 + k] = t_y * t[k];
   }
+  /// Values per abscissa in chebyshev_values: N + 1, twice that for an asymmetric contact.
+  int series_values() const { return (n_ + 1) * (asymmetric_ ? 2 : 1); }
 
   /// Adds to row `row` of jac the derivative of a function g(a, b, gamma, kappa) at one abscissa
-  /// with the Chebyshev values t, given dg/d ln a (ga), dg/db (gb), dg/dgamma (gg), dg/dkappa (gk),
-  /// each times `scale`: d ln a/d alpha_k = T_k, db/d beta_k = a_ref T_k, dgamma/dgamma_k = T_k,
-  /// dkappa/dkappa_k = a_ref T_k.
+  /// with the Chebyshev values t (chebyshev_values), given dg/d ln a (ga), dg/db (gb), dg/dgamma
+  /// (gg), dg/dkappa (gk), each times `scale`: d ln a/d alpha_k = T_k, db/d beta_k = a_ref T_k,
+  /// dgamma/dgamma_k = T_k, dkappa/dkappa_k = a_ref T_k, and the odd parts' t_y T_k alike.
   void add_series_row(Matrix& jac, int row, const Real* t, Real ga, Real gb, Real gg, Real gk,
                       Real scale) const {
     const Real ar = p_.a_ref;
-    for (int k = 0; k < n_; ++k) jac(row, k) += scale * ga * t[k];
-    for (int k = 0; k <= n_; ++k) {
-      jac(row, n_ + k) += scale * gb * ar * t[k];
-      jac(row, 2 * n_ + 1 + k) += scale * gg * t[k];
-      jac(row, 3 * n_ + 2 + k) += scale * gk * ar * t[k];
+    for (int part = 0; part < (asymmetric_ ? 2 : 1); ++part) {
+      const int base = part == 0 ? 0 : odd();
+      const Real* tk = t + part * (n_ + 1);
+      for (int k = 0; k < n_; ++k) jac(row, base + k) += scale * ga * tk[k];
+      for (int k = 0; k <= n_; ++k) {
+        jac(row, base + n_ + k) += scale * gb * ar * tk[k];
+        jac(row, base + 2 * n_ + 1 + k) += scale * gg * tk[k];
+        jac(row, base + 3 * n_ + 2 + k) += scale * gk * ar * tk[k];
+      }
     }
   }
 
@@ -242,7 +311,7 @@ class LineSpectrumResidual {
     const int m = points(), nu = unknowns(), il = 4 * n_ + 3, id = 4 * n_ + 4;
     const auto& lam = p_.lengths.retardation;
     const std::size_t mt = lam.size();
-    const int nt = n_ + 1;
+    const int nt = series_values();
     // Per point: the nodes, the functions there (once for all terms: the terms' node sets differ
     // in their t-nodes only), (L6) for each line term and its slopes.
     LineNodes<Real> nd;
@@ -254,7 +323,7 @@ class LineSpectrumResidual {
     Matrix dright;  // d right[k] / d x, row k
     SpectrumStripSlopes<Real> ss;
     for (int i = 0; i < m; ++i) {
-      const Real y = t_[i] * s.l;
+      const Real y = s.centre + t_[i] * s.l;
       const Functions here = functions(s, mo, y);
       const Real x0 = here.a + here.b;
       if (!(here.a > 0) || !(x0 > 0)) return false;
@@ -277,8 +346,8 @@ class LineSpectrumResidual {
         tv.resize(count * nt);
         for (std::size_t j = 0; j < count; ++j)
           chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nd.yp[j])),
-                           &tv[j * nt]);
-        chebyshev_values(u_here, ti.data());
+                           &tv[j * nt], s.t_at(nd.yp[j]));
+        chebyshev_values(u_here, ti.data(), s.t_at(y));
         dright.setZero(Eigen::Index(mt), nu);
       }
       // (S12): the right sides are (L6) at lambda_k of Q_k, the line terms' on one x-grid
@@ -337,6 +406,8 @@ class LineSpectrumResidual {
           if (line_term_[k] && by_right[k] != 0)
             for (int c = 0; c < nu; ++c) J(row, c) += scale * by_right[k] * dright(Eigen::Index(k), c);
         for (int c = 0; c < n_; ++c) J(row, c) += scale * by_a * a * ti[c];
+        if (asymmetric_)
+          for (int c = 0; c < n_; ++c) J(row, odd() + c) += scale * by_a * a * ti[n_ + 1 + c];
       };
       const Real s34 = 1 / (c1 * ar * ar);
       // (34): lhs - rhs. FP[F0]: sum_j (w_j/s_j) (dF0_j - dF0(y)); the log: -2 F0 d ln a, and
@@ -355,7 +426,9 @@ class LineSpectrumResidual {
       add_series_row(J, i, ti.data(), c1 * a * a / 2, 0, 0, 0, s34);
       strip_row(ss.pig1, ss.pig1_a, c1 * s34, i);
       strip_row(ss.b, ss.b_a, c1 * (b - lambda_sum_) * s34, i);
-      J(i, il) += drop_.drop_slope(p_, y) * y * s34;
+      const Real slope_h = drop_.drop_slope(p_, y);
+      J(i, il) += slope_h * (y - s.centre) * s34;  // y - c = l t: y for a symmetric contact
+      if (asymmetric_) J(i, centre_index()) += slope_h * p_.l_ref * s34;
       J(i, id) -= 1;
       // b, G0/a^2 and the centroid against the expansions.
       strip_row(ss.b, ss.b_a, 1 / ar, m + i);
@@ -368,17 +441,17 @@ class LineSpectrumResidual {
     const Real total = load(s, mo);
     r[4 * m] = total / p_.load_target - 1;
     if (jac) {
-      // d load = 2 sum_j w_j dF0(y_j) (nodes fixed in t), and load d ln l.
-      std::vector<Real> nodes, weights;
-      rule_->load(s, nodes, weights);
+      // d load = 2 sum_j w_j dF0(y_j) (nodes fixed in t; both halves for an asymmetric
+      // contact, once), and load d ln l.
       std::vector<Real> t(nt);
-      for (std::size_t j = 0; j < nodes.size(); ++j) {
-        const Functions f = functions(s, mo, nodes[j]);
-        chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nodes[j])),
-                         t.data());
+      const Real halves = asymmetric_ ? Real(1) : Real(2);
+      over_halves(s, [&](Real yj, Real w) {
+        const Functions f = functions(s, mo, yj);
+        chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(yj)), t.data(),
+                         s.t_at(yj));
         add_series_row(*jac, 4 * m, t.data(), 2 * f.f0, 0, c1 * f.a * f.a / 2, 0,
-                       2 * weights[j] / p_.load_target);
-      }
+                       halves * w / p_.load_target);
+      });
       (*jac)(4 * m, il) += total / p_.load_target;
     }
     for (int i = 0; i < r.size(); ++i)
@@ -389,6 +462,7 @@ class LineSpectrumResidual {
   LineSpectrumProblem<Real> p_;
   Drop drop_;
   int n_;
+  bool asymmetric_ = false;
   LineBasis basis_;
   Real scale_ = 0;
   Real mu_sum_ = 0, lambda_sum_ = 0;
@@ -430,18 +504,18 @@ struct LineSpectrumSolution {
   /// F0(y) per unit load per length: the long-term compliance of the terms solved for.
   Real f0_per_load() const { return single ? single->f0_per_load() : load_compliance; }
 
-  /// The contact along the roller at `stations` evenly spaced points inside (-l, l), as
-  /// LineSolution::along_roller: the load per unit length F0(y)/f0_per_load(), a(y), b(y); the
+  /// The contact along the roller at `stations` evenly spaced points inside (y_minus, y_plus),
+  /// as LineSolution::along_roller: the load per unit length F0(y)/f0_per_load(), a(y), b(y); the
   /// strip's peak pressure where one term is active (`single`), else NaN (the strip of a spectrum
   /// in the line theory is carried by its moments, not by a pressure, docs/theory.md (S14)).
   AlongRoller<Real> along_roller(int stations = 65) const {
     if (single) return single->along_roller(stations);
     AlongRoller<Real> out;
-    out.y_minus = -shape.l;
-    out.y_plus = shape.l;
+    out.y_minus = y_minus();
+    out.y_plus = y_plus();
     const int n = std::max(stations, 1);
     for (int k = 1; k <= n; ++k) {
-      const Real y = shape.l * (Real(2 * k) / Real(n + 1) - 1);
+      const Real y = shape.centre + shape.l * (Real(2 * k) / Real(n + 1) - 1);
       out.y.push_back(y);
       out.f0.push_back(f0(y) / load_compliance);
       out.a.push_back(shape.a(y));
@@ -456,6 +530,9 @@ struct LineSpectrumSolution {
   }
 
   Real l() const { return shape.l; }
+  /// The contact's ends c - l and c + l (-l and l for a symmetric contact).
+  Real y_minus() const { return shape.centre - shape.l; }
+  Real y_plus() const { return shape.centre + shape.l; }
   Real a(Real y) const { return shape.a(y); }
   Real b(Real y) const { return shape.b(y); }
   /// F0(y) = C1 a^2 (1/4 + G0/(2 a^2)), Eq. (33) with (S8): the load per unit length times the
@@ -466,7 +543,7 @@ struct LineSpectrumSolution {
     if (!(a > 0)) return Real(0);
     if (moments.gamma.empty()) return c1 * a * a / 4;
     const Real u = LineShape<Real>::coordinate(shape.basis, shape.scale, shape.one_minus_t2(y));
-    return c1 * a * a * (Real(1) / 4 + moments.gamma_at(u) / 2);
+    return c1 * a * a * (Real(1) / 4 + moments.gamma_at(u, shape.t_at(y)) / 2);
   }
 };
 
