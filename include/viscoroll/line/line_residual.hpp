@@ -5,8 +5,8 @@
 //   (34)  FP[F0](y) + F0(y) ln[16 (l^2 - y^2)/a^2]
 //           + C1 a^2/4 + (C1/2) b (b - 2 V) + h(y) - d = 0
 //         h(y) the roller's drop along its axis, a RollerDrop policy: C2 y^2/2 (Eq. 27, the
-//         default ParabolicDrop), or a symmetric roller profile (line_profile.hpp, docs/theory.md
-//         (RP1): h enters only here)
+//         default ParabolicDrop), or a roller profile (line_profile.hpp, docs/theory.md (RP1):
+//         h enters only here; y - c and l -+ (y - c) for an asymmetric contact centred at c)
 //   (LE)  the leading-edge condition C1 {a b e^z K1(z) - G e^z K0(z)} = right side, z = a/V,
 //         Eq. (42) with the right side of a LeadingEdgeCondition policy: by default (L6) of
 //         docs/theory.md section 4,

@@ -29,8 +29,8 @@ namespace viscoroll {
 ///   - `drop_slope(y) const`: h'(y);
 ///   - `y_min() const`, `y_max() const`: where the roller's body ends (-inf, +inf if it does not);
 ///     drop and drop_slope are defined strictly between them;
-///   - `symmetric() const`: h(-y) = h(y) and y_min = -y_max (the line solver's symmetric
-///     representation applies).
+///   - `symmetric() const`: h(-y) = h(y) and y_min = -y_max (the line solver's even
+///     representation applies; otherwise it adds the odd parts and the contact's centre).
 template <class P>
 concept RollerProfile = RealScalar<typename P::real_type> &&
                         requires(const P& p, typename P::real_type y) {
