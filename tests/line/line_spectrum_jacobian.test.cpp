@@ -16,10 +16,10 @@
 #include <viscoroll/line/line_node_rule.hpp>
 #include <viscoroll/line/line_spectrum.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
-#include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
 #include "support/jacobian_check.hpp"
+#include "support/three_term_spectrum.hpp"
 
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_line_spectrum_jacobian {
@@ -28,27 +28,11 @@ namespace {
 
 using Residual = viscoroll::LineSpectrumResidual<double, viscoroll::GaussLegendre<double, 12>>;
 
-/// The spectrum (f_k, tau_k) at speed v: retardation lengths v tau_k and the relaxation lengths
-/// from the exact conversion.
-viscoroll::SpectrumLengths<double> lengths_at(double v) {
-  const std::vector<viscoroll::detail::SpectrumTerm<double>> creep{
-      {2.0, 0.05 * v}, {3.0, 0.5 * v}, {4.0, 5 * v}};
-  viscoroll::SpectrumLengths<double> out;
-  for (const auto& t : creep) {
-    out.retardation.push_back(t.q);
-    out.creep_ratio += t.w;
-  }
-  for (const auto& t : viscoroll::detail::convert_spectrum(
-           creep, viscoroll::detail::SpectrumDirection::creep_to_relaxation, 1.0, 1.0))
-    out.relaxation.push_back(t.q);
-  return out;
-}
-
 /// Largest relative column error of the Jacobian against central differences, at a contact
 /// narrower than the static one, offset from the expansions' leading terms by `offset`.
 double worst_column_error(double v, int terms, double offset) {
   const double c1 = 1, c2 = (std::log(20.0) - 1) / 25;
-  const auto lengths = lengths_at(v);
+  const auto lengths = viscoroll_test::three_term_lengths(v);
   const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
   const viscoroll::LineSpectrumProblem<double> problem{
       c1, c2, lengths, slow.a0, slow.l, c1 * slow.a0 * slow.a0 * slow.l / 3};
@@ -64,7 +48,7 @@ double worst_column_error(double v, int terms, double offset) {
 }  // namespace
 
 TEST_CASE("spectrum strip: slopes in the right sides and the half width", "[line][spectrum]") {
-  const auto lengths = lengths_at(1.0);
+  const auto lengths = viscoroll_test::three_term_lengths(1.0);
   const std::vector<double> right{0.03, -0.02, 0.05};
   const double a = 0.8, c1 = 1.3;
   viscoroll::SpectrumStripSlopes<double> slopes;

@@ -11,10 +11,10 @@
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_spectrum.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
-#include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
 #include "support/jacobian_check.hpp"
+#include "support/three_term_spectrum.hpp"
 
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_line_tilt_jacobian {
@@ -82,16 +82,7 @@ TEST_CASE("line tilt: the asymmetric spectrum residual's Jacobian against centra
   // The three-term spectrum of tests/line/line_spectrum_jacobian.test.cpp, bound 1e-8 as there
   // (measured here 1e-10 ... 3e-10).
   for (const double v : {0.3, 1.0, 4.0}) {
-    const std::vector<viscoroll::detail::SpectrumTerm<double>> creep{
-        {2.0, 0.05 * v}, {3.0, 0.5 * v}, {4.0, 5 * v}};
-    viscoroll::SpectrumLengths<double> lengths;
-    for (const auto& t : creep) {
-      lengths.retardation.push_back(t.q);
-      lengths.creep_ratio += t.w;
-    }
-    for (const auto& t : viscoroll::detail::convert_spectrum(
-             creep, viscoroll::detail::SpectrumDirection::creep_to_relaxation, 1.0, 1.0))
-      lengths.relaxation.push_back(t.q);
+    const auto lengths = viscoroll_test::three_term_lengths(v);
     const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
     const viscoroll::LineSpectrumProblem<double> problem{
         c1, c2, lengths, slow.a0, slow.l, c1 * slow.a0 * slow.a0 * slow.l / 3};

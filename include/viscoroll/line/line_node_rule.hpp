@@ -33,8 +33,9 @@ namespace viscoroll {
 /// Members:
 ///   - `point(s, y, x0, nd)`: the nodes of one collocation point y with leading edge x0 = a + b > 0
 ///     into nd (empty on entry): both sides in s and the t-nodes of the memory integral;
-///   - `load(s, nodes, weights, side)`: the nodes and weights of the load integral (47) on [0, l]
-///     (distances from the centre c: one half of the contact).
+///   - `load(s, both, y, w)`: the nodes and weights of an integral over the contact, the load (47)
+///     and the like: [0, l] with the weights doubled (a symmetric contact, even integrands), or
+///     both halves of [c - l, c + l] (`both`, an asymmetric contact).
 template <RealScalar Real, class Quadrature>
 requires NodalQuadratureRule<Quadrature, Real>
 class LineNodeRule {
@@ -73,13 +74,23 @@ class LineNodeRule {
     }
   }
 
-  /// A side's nodes from y = 0, with the other end at distance l and no kernel (its scale taken
-  /// as l, so the first panel is l/4).
-  /// For an asymmetric shape, `side` (+1 or -1) names the half [c, c + l] or [c - l, c] (the
-  /// nodes are distances from the centre c either way).
-  void load(const LineShape<Real>& s, std::vector<Real>& nodes, std::vector<Real>& weights,
-            int side = 1) const {
-    append_side_nodes(s, s.l, s.l, side, s.l, nodes, weights);
+  /// The nodes y and weights w of an integral over the contact (appended): each half is a side's
+  /// nodes from the centre, with the other end at distance l and no kernel (its scale taken as l,
+  /// so the first panel is l/4). A symmetric contact (both = false) takes the half [0, l] with
+  /// its weights doubled (exact: the sum is twice the half's, bit for bit); an asymmetric one
+  /// (both) the halves [c, c + l] and [c - l, c], y = c +- s, each with its own end.
+  void load(const LineShape<Real>& s, bool both, std::vector<Real>& y,
+            std::vector<Real>& w) const {
+    const std::size_t first = y.size();
+    append_side_nodes(s, s.l, s.l, 1, s.l, y, w);
+    if (!both) {
+      for (std::size_t j = first; j < w.size(); ++j) w[j] *= 2;
+      return;
+    }
+    const std::size_t half = y.size();
+    append_side_nodes(s, s.l, s.l, -1, s.l, y, w);
+    for (std::size_t j = first; j < y.size(); ++j)
+      y[j] = j < half ? Real(s.centre + y[j]) : Real(s.centre - y[j]);
   }
 
  private:

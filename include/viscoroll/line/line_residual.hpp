@@ -205,23 +205,14 @@ class LineResidual {
   /// or a non-finite value.
   bool operator()(const Vector& x, Vector& r) const;
 
-  /// int_{c-l}^{c+l} F0 dy (Eq. 47): twice one half for a symmetric contact, else both halves.
+  /// int_{c-l}^{c+l} F0 dy (Eq. 47), on the rule's nodes over the contact (LineNodeRule::load).
   Real load(const LineShape<Real>& s) const {
     std::vector<Real> nodes, weights;
-    Real total = 0;
-    for (int side : {1, -1}) {
-      nodes.clear();
-      weights.clear();
-      rule_.load(s, nodes, weights, side);
-      Real sum = 0;
-      for (std::size_t j = 0; j < nodes.size(); ++j) {
-        const Real y = asymmetric_ ? Real(s.centre + side * nodes[j]) : nodes[j];
-        sum += weights[j] * strip_functions(p_.c1, s.a(y), s.b(y), p_.vtau, p_.f).f0;
-      }
-      if (!asymmetric_) return 2 * sum;
-      total += sum;
-    }
-    return total;
+    rule_.load(s, asymmetric_, nodes, weights);
+    Real sum = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
+    return sum;
   }
 
   /// (34) and the leading-edge residual at one y, |y - c| < l (scaled as in operator()).
@@ -480,37 +471,22 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
     jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
     jac.row(m + i) = drle.transpose();
   }
-  // Load (47), nodes fixed in t: d/d ln l of the integral is the integral itself; twice one
-  // half for a symmetric contact, both halves for an asymmetric one (as load()).
+  // Load (47) on load()'s nodes, fixed in t: d/d ln l of the integral is the integral itself.
   std::vector<Real> nodes, weights;
-  Real total = 0;
-  Vector dtotal = Vector::Zero(nu);
-  for (int side : {1, -1}) {
-    nodes.clear();
-    weights.clear();
-    rule_.load(s, nodes, weights, side);
-    Real sum = 0;
-    Vector dsum = Vector::Zero(nu);
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-      const Real yj = asymmetric_ ? Real(s.centre + side * nodes[j]) : nodes[j];
-      const auto dj = strip_derivatives(s.a(yj), s.b(yj));
-      const auto& sf = dj.value;
-      sum += weights[j] * sf.f0;
-      if (!(sf.a > 0)) continue;
-      shape_gradient(s, yj, sf.a, dan, dbn);
-      dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
-    }
-    if (!asymmetric_) {
-      total = 2 * sum;
-      dtotal = 2 * dsum;
-      break;
-    }
-    total += sum;
-    dtotal += dsum;
+  rule_.load(s, asymmetric_, nodes, weights);
+  Real sum = 0;
+  Vector dsum = Vector::Zero(nu);
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
+    const auto& sf = dj.value;
+    sum += weights[j] * sf.f0;
+    if (!(sf.a > 0)) continue;
+    shape_gradient(s, nodes[j], sf.a, dan, dbn);
+    dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
   }
-  r[2 * m] = total / p_.load_target - 1;
-  jac.row(2 * m) = (dtotal / p_.load_target).transpose();
-  jac(2 * m, lam) = total / p_.load_target;
+  r[2 * m] = sum / p_.load_target - 1;
+  jac.row(2 * m) = (dsum / p_.load_target).transpose();
+  jac(2 * m, lam) = sum / p_.load_target;
   for (int i = 0; i < r.size(); ++i)
     if (!(boost::math::isfinite)(r[i])) return false;
   return jac.allFinite();

@@ -232,22 +232,27 @@ class LineSpectrumResidual {
     return evaluate(x, r, &jac) && jac.allFinite();
   }
 
-  /// int F0 dy over the contact (Eq. 47): twice one half, or both halves of an asymmetric one.
+  /// int F0 dy over the contact (Eq. 47), on the rule's nodes over it (LineNodeRule::load).
   Real load(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
-    Real total = 0;
-    over_halves(s, [&](Real y, Real w) { total += w * functions(s, mo, y).f0; });
-    return asymmetric_ ? total : 2 * total;
+    std::vector<Real> nodes, weights;
+    rule_->load(s, asymmetric_, nodes, weights);
+    Real sum = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      sum += weights[j] * functions(s, mo, nodes[j]).f0;
+    return sum;
   }
 
   /// int F0 (b + kappa) dy / int F0 dy over the contact: the pressure's centroid from the axis,
   /// chi / C1 (Eq. 51 strip by strip, (S10), (S15)).
   Real centroid(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
+    std::vector<Real> nodes, weights;
+    rule_->load(s, asymmetric_, nodes, weights);
     Real num = 0, den = 0;
-    over_halves(s, [&](Real y, Real w) {
-      const Functions f = functions(s, mo, y);
-      num += w * f.f0 * (f.b + f.kappa);
-      den += w * f.f0;
-    });
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      const Functions f = functions(s, mo, nodes[j]);
+      num += weights[j] * f.f0 * (f.b + f.kappa);
+      den += weights[j] * f.f0;
+    }
     return num / den;
   }
 
@@ -255,21 +260,6 @@ class LineSpectrumResidual {
   /// Where the asymmetric contact's unknowns start (the odd parts), and c / l_ref.
   int odd() const { return 4 * n_ + 5; }
   int centre_index() const { return 8 * n_ + 8; }
-
-  /// f(y, w) at the load rule's nodes (distances from the centre) on [0, l], or on both halves
-  /// of an asymmetric contact (y = c +- node).
-  template <class F>
-  void over_halves(const LineShape<Real>& s, F f) const {
-    std::vector<Real> nodes, weights;
-    for (int side : {1, -1}) {
-      nodes.clear();
-      weights.clear();
-      rule_->load(s, nodes, weights, side);
-      for (std::size_t j = 0; j < nodes.size(); ++j)
-        f(asymmetric_ ? Real(s.centre + side * nodes[j]) : nodes[j], weights[j]);
-      if (!asymmetric_) return;
-    }
-  }
 
   /// T_0(u) ... T_N(u) into t (N + 1 values), then, for an asymmetric contact, t_y times them
   /// (t_y = (y - c)/l, the odd parts' factor).
@@ -441,17 +431,16 @@ class LineSpectrumResidual {
     const Real total = load(s, mo);
     r[4 * m] = total / p_.load_target - 1;
     if (jac) {
-      // d load = 2 sum_j w_j dF0(y_j) (nodes fixed in t; both halves for an asymmetric
-      // contact, once), and load d ln l.
-      std::vector<Real> t(nt);
-      const Real halves = asymmetric_ ? Real(1) : Real(2);
-      over_halves(s, [&](Real yj, Real w) {
-        const Functions f = functions(s, mo, yj);
-        chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(yj)), t.data(),
-                         s.t_at(yj));
+      // d load = sum_j w_j dF0(y_j) on load()'s nodes (fixed in t), and load d ln l.
+      std::vector<Real> nodes, weights, t(nt);
+      rule_->load(s, asymmetric_, nodes, weights);
+      for (std::size_t j = 0; j < nodes.size(); ++j) {
+        const Functions f = functions(s, mo, nodes[j]);
+        chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nodes[j])),
+                         t.data(), s.t_at(nodes[j]));
         add_series_row(*jac, 4 * m, t.data(), 2 * f.f0, 0, c1 * f.a * f.a / 2, 0,
-                       halves * w / p_.load_target);
-      });
+                       weights[j] / p_.load_target);
+      }
       (*jac)(4 * m, il) += total / p_.load_target;
     }
     for (int i = 0; i < r.size(); ++i)
