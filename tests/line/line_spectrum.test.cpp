@@ -27,7 +27,8 @@ using viscoroll::PronyTerm;
 using viscoroll::StandardLinearSolid;
 
 using viscoroll::testing::spectrum_scene;  // the paper's proportions, load 1
-using viscoroll::testing::two_term_creep;  // (f, tau) = (3, 0.05), (6, 5)
+using viscoroll::testing::twenty_term_creep;  // f_k = 0.45, tau_k = 1e-3 ... 1e3
+using viscoroll::testing::two_term_creep;     // (f, tau) = (3, 0.05), (6, 5)
 
 double rel(double x, double y) { return std::abs(x - y) / std::abs(y); }
 
@@ -186,6 +187,37 @@ TEST_CASE("line spectrum: agrees with the BEM within the line theory's error", "
     CHECK(rel(s.a(0), e.a0) <= 3e-2);
     CHECK(rel(s.l(), e.l) <= 3e-2);
     CHECK(rel(s.b(0), e.b0) <= 7e-2);
+  }
+}
+
+TEST_CASE("line spectrum: twenty terms agree with the BEM within the one-term line theory's error",
+          "[line][spectrum][slow]") {
+  // V = 0.01 and 1 (every term between its slow and its fast limit somewhere), BEM at N = 32.
+  // The bounds are the standard linear solid's largest line-theory errors against the BEM at
+  // N = 32 over Vtau/a0 = 0.01 ... 100 on the paper's scene (docs/figures/bem_vs_line.csv;
+  // docs/validation.md): a(0) 2.6%, l 2.1%, d 0.43%, chi 1.15% (2.2% against the grid-
+  // extrapolated BEM at Vtau/a0 = 0.01) and the contact centre's shift |b(0) - b_BEM|/a_BEM
+  // 1.44%. b(0) relative to itself is no measure where it is a few percent of a(0): the BEM's own
+  // b(0) moves by 3% of itself between grids 32, 64 and 96 here. Measured: a(0) 1.4%, 1.7%;
+  // l 1.2%, 1.3%; d 0.36%, 0.32%; chi 1.29%, 0.80%; shift 0.38%, 0.93%.
+  const auto material = twenty_term_creep();
+  const LineSolver<double, PronyCreep<double>> line(material, LineOptions{.terms = 4});
+  viscoroll::BemOptions options;
+  options.grid = 32;
+  const viscoroll::BemSolver<double, PronyCreep<double>> bem(material, options);
+  for (const double speed : {0.01, 1.0}) {
+    const auto scene = spectrum_scene(speed);
+    const auto s = line.solve(scene);
+    const auto e = bem.solve(viscoroll::BemScene<double>{
+        .c1 = scene.c1, .c2 = scene.c2, .load = scene.load, .speed = scene.speed});
+    REQUIRE(s.converged);
+    REQUIRE(e.converged);
+    CAPTURE(speed, s.a(0), e.a0, s.b(0), e.b0, s.l(), e.l, s.d, e.d, s.chi, e.chi);
+    CHECK(rel(s.d, e.d) <= 4.3e-3);
+    CHECK(rel(s.chi, e.chi) <= 2.2e-2);
+    CHECK(rel(s.a(0), e.a0) <= 2.6e-2);
+    CHECK(rel(s.l(), e.l) <= 2.1e-2);
+    CHECK(std::abs(s.b(0) - e.b0) / e.a0 <= 1.44e-2);
   }
 }
 
