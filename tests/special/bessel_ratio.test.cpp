@@ -1,6 +1,7 @@
 // Tests of viscoroll/special/bessel_ratio.hpp: I_1/I_0, I_2/I_0, K_1/K_0 and e^{-x} I_nu, e^{x}
 // K_nu.
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/next.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <catch2/catch.hpp>
@@ -288,7 +289,7 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
   // [1.5e-8, 21) and at both sides of every piece boundary k/2, where the piecewise Chebyshev
   // interpolant is used (detail/i1_over_i0_chebyshev.hpp). Bound 2.5 eps: half an ulp for the
   // coefficients' rounding and for each of the four levels of Estrin's sum (its later terms are
-  // below 1/7 of the leading one), the truncation below 1e-17; measured 1.73 eps over 27,000
+  // below 1/7 of the leading one), the truncation below 1e-17; measured 1.79 eps over 27,000
   // points of the range (docs/special-functions.md).
   for (const auto& r : references) {
     const double x = std::ldexp(double(r.m), r.e);
@@ -335,6 +336,49 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
     CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
   for (const long double x : {1e-3L, 0.5L, 3.0L, 23.0L, 40.0L})
     CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
+}
+
+TEST_CASE("bessel_i1_over_i0_fast: the interpolant's table", "[special]") {
+  // detail::kI1OverI0Pieces recomputed as its header says: on piece k the interpolant of
+  // r = I1/I0 (of r/x in z = x^2 on piece 0) at the 14 Chebyshev points of the first kind, its
+  // Chebyshev coefficients by the discrete cosine sum, its monomial coefficients in u by
+  // T_{j+1} = 2 u T_j - T_{j-1}, all in cpp_bin_float_50, each rounded once to double: every
+  // entry equals the table's.
+  using viscoroll::detail::kI1OverI0Pieces;
+  constexpr int n = 14;
+  const int pieces = static_cast<int>(std::size(kI1OverI0Pieces));
+  CHECK(pieces == 2 * viscoroll::detail::bessel_asymptotic_threshold<double>());
+  const Mp50 pi = boost::math::constants::pi<Mp50>();
+  for (int k = 0; k < pieces; ++k) {
+    Mp50 f[n], cheb[n], t_prev[n], t_cur[n], mono[n];
+    for (int i = 0; i < n; ++i) {
+      const Mp50 u = cos(pi * (i + Mp50(0.5)) / n);
+      const Mp50 x = k == 0 ? Mp50(sqrt((u + 1) / 8)) : Mp50((k + (u + 1) / 2) / 2);
+      const Mp50 r = boost::math::cyl_bessel_i(Mp50(1), x) / boost::math::cyl_bessel_i(Mp50(0), x);
+      f[i] = k == 0 ? Mp50(r / x) : r;
+    }
+    for (int j = 0; j < n; ++j) {
+      Mp50 sum = 0;
+      for (int i = 0; i < n; ++i) sum += f[i] * cos(pi * j * (i + Mp50(0.5)) / n);
+      cheb[j] = sum * (j == 0 ? 1 : 2) / n;
+      t_prev[j] = j == 0 ? 1 : 0;
+      t_cur[j] = j == 1 ? 1 : 0;
+      mono[j] = (j == 0 ? cheb[0] : Mp50(0)) + cheb[1] * t_cur[j];
+    }
+    for (int j = 2; j < n; ++j) {
+      Mp50 t_next[n];
+      for (int m = 0; m < n; ++m) t_next[m] = (m > 0 ? Mp50(2 * t_cur[m - 1]) : Mp50(0)) - t_prev[m];
+      for (int m = 0; m < n; ++m) {
+        t_prev[m] = t_cur[m];
+        t_cur[m] = t_next[m];
+        mono[m] += cheb[j] * t_cur[m];
+      }
+    }
+    for (int m = 0; m < n; ++m) {
+      INFO("piece " << k << ", coefficient " << m);
+      CHECK(static_cast<double>(mono[m]) == kI1OverI0Pieces[k][m]);
+    }
+  }
 }
 
 TEST_CASE("bessel_i1_over_i0_fast: the ratio's series in 1/x, its coefficients and length",
