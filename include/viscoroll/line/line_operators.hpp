@@ -170,7 +170,7 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
   const Real v = vtau;
   const std::size_t nt = nd.tn.size();
   // wk: the t-weights W_k with e^-t and V; wtu2 (W u^2) only for the slopes.
-  Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(nt),
+  Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(slopes ? nt : 0),
       p5(slopes ? nt : 0);
   std::vector<Real> xk(nt);
   for (std::size_t k = 0; k < nt; ++k) {
@@ -207,15 +207,17 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
         k2_l = k2 - w * kf_s;
       }
     } else {
-      // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed divisions and
-      // square roots, a tree-ordered sum; the same operations with and without the slopes, so
-      // that the Jacobian's residual is the residual bit for bit.
-      p2 = (uk2 + sigma2).inverse();
-      k2 = -w * (wu * (p2 * p2.sqrt())).sum() / (x0 * x0);
-      if (slopes != nullptr) {
+      // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed square roots
+      // and divisions in one pass, a tree-ordered sum; the same operations with and without the
+      // slopes, so that the Jacobian's residual is the residual bit for bit.
+      if (slopes == nullptr) {
+        k2 = -w * (wu * (uk2 + sigma2).rsqrt().cube()).sum() / (x0 * x0);
+      } else {
+        p2 = (uk2 + sigma2).rsqrt();  // P
+        k2 = -w * (wu * p2.cube()).sum() / (x0 * x0);
         // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
         // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2.
-        p5 = p2 * p2 * p2.sqrt();
+        p5 = p2.cube() * p2.square();
         k2_x0 = -w * (sigma2 * (wk * p5).sum() - 2 * (wtu2 * p5).sum()) / (x0 * x0 * x0);
         k2_l = k2 + 3 * w * sigma2 * (wu * p5).sum() / (x0 * x0);
       }
