@@ -8,6 +8,7 @@
 //                       LineOptions::quadrature_tolerance = 10^-k (k = 0: the default, eps);
 //   BM_line_solve_fast/s: a cold solve with LineOptions::fast() (docs/performance.md, "The fast
 //                       setting") at V tau/a0 = s/1000;
+//   BM_line_solve_fast_6/s: the same on 6-point Gauss-Legendre panels (FastLineSolverD);
 //   BM_line_solve_fast_full_stages/s: the same with every continuation stage iterated to a root
 //                       from the damping 1e-3 (fast() with stage_tolerance 0, stage_damping
 //                       1e-3), for the ratio in one run;
@@ -37,9 +38,10 @@ viscoroll::LineScene<double> paper_scene(double vtau) {
   return {.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = load, .speed = vtau};
 }
 
+template <class Solver = viscoroll::LineSolverD>
 void solve_with(benchmark::State& state, const viscoroll::LineOptions& options, double vtau) {
-  const viscoroll::LineSolverD solver(kRubber, options);
-  viscoroll::LineSolverD::Solution s;
+  const Solver solver(kRubber, options);
+  typename Solver::Solution s;
   for (auto _ : state) {
     s = solver.solve(paper_scene(vtau));
     benchmark::DoNotOptimize(s);  // the whole solution: a double alone may go through a register
@@ -73,6 +75,11 @@ void BM_line_solve_tolerance(benchmark::State& state) {
 
 void BM_line_solve_fast(benchmark::State& state) {
   solve_with(state, viscoroll::LineOptions::fast(), static_cast<double>(state.range(0)) / 1000);
+}
+
+void BM_line_solve_fast_6(benchmark::State& state) {
+  solve_with<viscoroll::FastLineSolverD>(state, viscoroll::LineOptions::fast(),
+                                         static_cast<double>(state.range(0)) / 1000);
 }
 
 void BM_line_solve_fast_full_stages(benchmark::State& state) {
@@ -164,6 +171,7 @@ BENCHMARK(BM_line_solve_tolerance)
     ->Args({5, 1000, 4})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_solve_fast)->Arg(10)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_line_solve_fast_6)->Arg(10)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_line_solve_fast_full_stages)
     ->Arg(10)
     ->Arg(1000)

@@ -5,7 +5,9 @@
 //   threads. Wall time (UseRealTime), so the thread count shows. Counter not_converged: speeds
 //   that did not converge (their time counts).
 //   BM_sweep_line_fast/chunk/threads: the same with LineOptions::fast() (docs/performance.md, "The
-//   fast setting").
+//   fast setting");
+//   BM_sweep_line_fast_6/chunk/threads: the same on 6-point panels (FastLineSolverD); chunk 1 is
+//   a cold solve at every speed.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -17,9 +19,10 @@ namespace {
 
 const viscoroll::StandardLinearSolid<double> kRubber(1, 0.5, 9, 1);  // tau = 1: speed = V tau
 
+template <class Solver = viscoroll::LineSolverD>
 void run_sweep(benchmark::State& state, const viscoroll::LineOptions& options, std::size_t chunk,
                unsigned threads) {
-  const viscoroll::LineSolverD solver(kRubber, options);
+  const Solver solver(kRubber, options);
   const double load = 5.0 / (3 * (1 + 9) * kRubber.instantaneous_compliance());  // a0 = 1
   const viscoroll::LineScene<double> scene{
       .c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = load, .speed = 0.0};
@@ -50,6 +53,12 @@ void BM_sweep_line_fast(benchmark::State& state) {
             static_cast<unsigned>(state.range(1)));
 }
 
+void BM_sweep_line_fast_6(benchmark::State& state) {
+  run_sweep<viscoroll::FastLineSolverD>(state, viscoroll::LineOptions::fast(),
+                                        static_cast<std::size_t>(state.range(0)),
+                                        static_cast<unsigned>(state.range(1)));
+}
+
 }  // namespace
 
 BENCHMARK(BM_sweep_line)
@@ -65,6 +74,13 @@ BENCHMARK(BM_sweep_line_fast)
     ->Args({100, 1})
     ->Args({50, 2})
     ->Args({25, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK(BM_sweep_line_fast_6)
+    ->Args({100, 1})
+    ->Args({50, 2})
+    ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(3);
