@@ -38,7 +38,8 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
 }
 
 /// The fields of a line solution `s` (LineSolution or LineSpectrumSolution) after the record's
-/// head (method, the material's keys, speed): the contact's shape up to chi (with the peak of the
+/// head (method, the material's keys, speed): the contact's shape up to chi (a0, b0 at y = 0,
+/// both 0 where the contact does not reach y = 0) (with the peak of the
 /// load per unit length along the roller, f0_max at f0_max_y, over
 /// along_roller(line_profile_stations)'s stations: line_f0_peak; as the bem's record), then
 /// `middle` (the peak pressure pmax, pmax_x; a spectrum's active_terms), then the iteration's
@@ -46,8 +47,11 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
 template <class Record, class Solution>
 Record line_fields(const Solution& s, const Record& middle, int terms, double seconds) {
   const auto [f0_max, f0_max_y] = line_f0_peak(s, line_profile_stations);
-  Record out = {{"a0", s.a(0.0)},
-                {"b0", s.b(0.0)},
+  // Where the contact does not reach y = 0 (a tilted roller pressed off the centre) there is no
+  // strip at y = 0: a0 = 0 and b0 = 0 (b's series extrapolated there would mean nothing).
+  const double a0 = s.a(0.0);
+  Record out = {{"a0", a0},
+                {"b0", a0 > 0 ? double(s.b(0.0)) : 0.0},
                 {"l", s.l()},
                 {"y_minus", s.shape.centre - s.l()},
                 {"y_plus", s.shape.centre + s.l()},

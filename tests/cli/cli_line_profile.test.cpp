@@ -15,7 +15,9 @@
 #include <string>
 #include <variant>
 #include <vector>
+#include <viscoroll/line/line_solver.hpp>
 
+#include "cli/line_record.hpp"
 #include "cli/scene_file.hpp"
 #include "cli_run.hpp"
 
@@ -195,6 +197,42 @@ TEST_CASE("cli line profile: a tilted roller solves and its opposite tilt mirror
   CHECK(p["chi"].get<double>() == Approx(q["chi"].get<double>()).epsilon(tol));
   CHECK(p["f0_max_y"].get<double>() < 0);
   CHECK(q["f0_max_y"].get<double>() > 0);
+}
+
+TEST_CASE("cli line profile: a contact that does not reach y = 0 has a0 = b0 = 0 in its record",
+          "[cli][rollers][line]") {
+  // A tilted roller pressed off its centre: no strip at y = 0, so the record's a0 and b0 (the
+  // strip at y = 0) are 0, not b's series extrapolated beyond the contact. The shape is set by
+  // hand (a = a_ref sqrt(1 - t^2), b = 0.1 a_ref + 0.05 a_ref t on [c - l, c + l]); the record
+  // type is viscoroll-solve's (key, value) sequence.
+  using Value = std::variant<double, long long, bool, std::string, std::vector<std::string>>;
+  struct Field {
+    std::string key;
+    Value value;
+  };
+  const auto a0_b0 = [](const viscoroll::LineSolverD::Solution& s) {
+    std::map<std::string, double> numbers;
+    for (const Field& f : cli::line_fields<std::vector<Field>>(s, {}, 4, 0.0))
+      if (const double* x = std::get_if<double>(&f.value)) numbers[f.key] = *x;
+    return std::pair{numbers.at("a0"), numbers.at("b0")};
+  };
+  viscoroll::LineSolverD::Solution s;
+  s.shape.a_ref = 1;
+  s.shape.l = 2;
+  s.shape.beta = {0.1};
+  s.shape.alpha_odd = {0.0};
+  s.shape.beta_odd = {0.05};
+  s.shape.centre = 0.5;  // the contact [-1.5, 2.5] holds y = 0
+  const auto [a_in, b_in] = a0_b0(s);
+  CHECK(a_in > 0);
+  CHECK(a_in == s.a(0.0));
+  CHECK(b_in == s.b(0.0));
+  s.shape.centre = 3;  // the contact [1, 5] does not
+  const auto [a_out, b_out] = a0_b0(s);
+  CHECK(s.a(0.0) == 0);
+  CHECK(s.b(0.0) != 0);  // b's series extrapolated to y = 0, which the record does not report
+  CHECK(a_out == 0);
+  CHECK(b_out == 0);
 }
 
 TEST_CASE("cli line profile: plane and a misplaced --profile-out are errors naming their key",
