@@ -36,10 +36,15 @@ namespace viscoroll::numerics {
 ///   once, before any test above;
 /// - undefined: the Jacobian could not be evaluated;
 /// - the iteration limit.
+/// `jac` is the iteration's Jacobian: on return it holds the one at the last accepted iterate
+/// (fresh or carried there by Broyden's update; at a converged root within O(|last step|) of
+/// J(x), the step below eps^0.6 (1 + max |x|) taken from a Jacobian refreshed at or below the
+/// root tolerance), unless the return is undefined or at once by the stage tolerance.
 template <class Real, LeastSquaresProblem<Real> Problem>
 LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Real>& x,
                                         DynamicVector<Real>& r,
-                                        const LeastSquaresOptions<Real>& options = {}) {
+                                        const LeastSquaresOptions<Real>& options,
+                                        DynamicMatrix<Real>& jac) {
   using Vector = DynamicVector<Real>;
   using Matrix = DynamicMatrix<Real>;
   using std::pow;
@@ -49,7 +54,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
   const Real step_tol = pow(eps, Real(0.6));
   Real cost = r.squaredNorm();
   Real mu = options.initial_damping;
-  Matrix jac(problem.equations(), n);
+  jac.resize(problem.equations(), n);
   Vector trial(n), rt(problem.equations());
   LeastSquaresOutcome out{.reason = "iteration limit"};
   bool fresh = false;
@@ -180,6 +185,15 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     }
   }
   return out;
+}
+
+/// Levenberg-Marquardt as above, its Jacobian kept to itself.
+template <class Real, LeastSquaresProblem<Real> Problem>
+LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Real>& x,
+                                        DynamicVector<Real>& r,
+                                        const LeastSquaresOptions<Real>& options = {}) {
+  DynamicMatrix<Real> jac;
+  return levenberg_marquardt(problem, x, r, options, jac);
 }
 
 }  // namespace viscoroll::numerics
