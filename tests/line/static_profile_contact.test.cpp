@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/line/static_profile_contact.hpp>
@@ -150,6 +152,33 @@ TEST_CASE("static profile contact: logarithmic crown, body ends and bad input") 
                     Catch::Contains("compliance * load") && Catch::Contains("> 0"));
   CHECK_THROWS_WITH(static_profile_contact(ell, 0.3, 0), Catch::Contains("terms"));
   CHECK_THROWS_AS(static_profile_contact(ell, std::nan("")), std::invalid_argument);
+}
+
+TEST_CASE("static profile contact: off the roller's centre, and a short contact named as such") {
+  // A crown of radius 2 about y = 0.04 on a body y = -0.08 ... 0.08, tabulated at 65 points (the
+  // table symmetric about 0.04 on the contact): the contact sits about 0.04, clear of y = 0.
+  std::vector<double> y, h;
+  for (int i = 0; i <= 64; ++i) {
+    y.push_back(-0.08 + 0.0025 * i);
+    h.push_back((y.back() - 0.04) * (y.back() - 0.04) / 4);
+  }
+  const auto off = static_profile_contact(TabulatedProfile<double>(0.05, y, h), 1e-6);
+  REQUIRE(off.converged);
+  CHECK(std::abs(off.centre() - 0.04) <= 1e-12 * off.half_length());  // measured 5e-16
+  CHECK(off.y_minus > 0);
+  CHECK(off.half_length() > 3 * off.a_ref);
+  // A table whose contact is about as long as it is wide (half length 1.09 half widths, far from
+  // the body's ends): the line equations have no root there, which is reported as the contact's
+  // shortness, not as reaching the body end.
+  const auto shortc = static_profile_contact(
+      TabulatedProfile<double>(0.05, {-0.08, 0, 0.01, 0.02, 0.04, 0.06, 0.07, 0.08},
+                               {0.05, 0.02, 0.01, 0.003, 0, 0.003, 0.01, 0.02}),
+      3.98e-6);
+  INFO(shortc.reason);
+  CHECK_FALSE(shortc.converged);
+  CHECK(shortc.reason.find("not slender") != std::string::npos);
+  CHECK(shortc.reason.find("body end") == std::string::npos);
+  CHECK(shortc.warnings.empty());
 }
 
 }  // namespace test_static_profile_contact

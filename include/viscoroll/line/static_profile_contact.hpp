@@ -530,14 +530,25 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     }
   }
   if (!converged) {
-    if (blocked || clip_minus || clip_plus) {
+    // The body end is the verdict where slicing (which overestimates the length) was clipped by
+    // it, or where Newton's trial steps left the body from a contact within a quarter of its
+    // half length of an end; elsewhere a blocked step is only the iteration's failure.
+    const bool near_end = out.y_minus - ymin < l / 4 || ymax - out.y_plus < l / 4;
+    if ((blocked && near_end) || clip_minus || clip_plus) {
       out.warnings.push_back(
           "the contact reaches the roller's body end (y_min = " + text(ymin) +
           ", y_max = " + text(ymax) + "): outside the line theory, no solution is returned");
       return fail("the contact reaches the roller's body end");
     }
+    // A contact not much longer than wide is outside the line theory, which needs l >> a: its
+    // equations may then have no root; say so (the line solver's slenderness warning is l/a < 3).
+    const Real slenderness = l / a_ref;
     return fail("Newton's method stopped at residual " + text(rnorm) + " above the tolerance " +
-                text(tolerance) + (m > 1024 ? " (F0 not resolved by 1025 points)" : ""));
+                text(tolerance) + (m > 1024 ? " (F0 not resolved by 1025 points)" : "") +
+                (slenderness < 3 ? "; the contact found is not slender (half length " +
+                                       text(l) + ", " + text(slenderness) +
+                                       " times the half width): outside the line theory"
+                                 : std::string()));
   }
   if (tail > tail_tolerance)
     return fail("F0 is not resolved by 1025 interpolation points (Chebyshev tail " + text(tail) +
