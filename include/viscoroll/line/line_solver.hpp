@@ -551,8 +551,8 @@ class LineSolver {
         const Real sqrt_eps = sqrt(std::numeric_limits<Real>::epsilon());
         // At a root that Levenberg-Marquardt certified its own Jacobian serves: within
         // O(eps^0.6) of J(x) (its last step), which moves the estimate by a relative
-        // O(eps^0.6 / sigma_min), far below the factor at which it is judged (sqrt(eps) against
-        // its value at ordinary roots, 1e-13 ... 1e-11).
+        // O(eps^0.6 / sigma_min); what the estimate decides is its side of sqrt(eps), against
+        // 1e-15 ... 1e-11 at ordinary roots and far beyond it at folds (docs/line-solver.md).
         if (out.converged && least_squares && r.cwiseAbs().maxCoeff() <= root_tolerance())
           estimate = jac_at_root ? newton_correction(jac, r) : newton_correction(res, x);
         const bool narrow = std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits;
