@@ -170,7 +170,7 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
   const Real v = vtau;
   const std::size_t nt = nd.tn.size();
   // wk: the t-weights W_k with e^-t and V; wtu2 (W u^2) only for the slopes.
-  Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(slopes ? nt : 0),
+  Eigen::Array<Real, Eigen::Dynamic, 1> wk(nt), uk2(nt), wu(nt), wtu2(slopes ? nt : 0), p2(nt),
       p5(slopes ? nt : 0);
   std::vector<Real> xk(nt);
   for (std::size_t k = 0; k < nt; ++k) {
@@ -208,13 +208,11 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
       }
     } else {
       // P = (u^2 + sigma^2)^(-1/2), k2 = -w sum W u P^3 / x0^2 (W = wk): packed square roots
-      // and divisions in one pass, a tree-ordered sum; the same operations with and without the
-      // slopes, so that the Jacobian's residual is the residual bit for bit.
-      if (slopes == nullptr) {
-        k2 = -w * (wu * (uk2 + sigma2).rsqrt().cube()).sum() / (x0 * x0);
-      } else {
-        p2 = (uk2 + sigma2).rsqrt();  // P
-        k2 = -w * (wu * p2.cube()).sum() / (x0 * x0);
+      // and divisions, a tree-ordered sum; one expression with and without the slopes, so that
+      // the Jacobian's residual is the residual bit for bit.
+      p2 = (uk2 + sigma2).rsqrt();  // P
+      k2 = -w * (wu * p2.cube()).sum() / (x0 * x0);
+      if (slopes != nullptr) {
         // dk2/dx0 = -w sum W (sigma^2 - 2 u^2) P^5 / x0^3,
         // dk2/dln l = k2 + 3 w sigma^2 sum W u P^5 / x0^2.
         p5 = p2.cube() * p2.square();
