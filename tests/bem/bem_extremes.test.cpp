@@ -71,6 +71,32 @@ TEST_CASE("bem extremes: speed 1e308 gives the glassy solution", "[bem]") {
   }
 }
 
+TEST_CASE("bem extremes: a memory length far under a cell is the long-term contact to rounding",
+          "[bem]") {
+  // M_L = K_e + O(L) (B3), and the contact's a0, l and d move at second order in L (the first
+  // order is the shift b ~ L, measured a0 - 1.1e-2 (L/hx)^2, d - 5e-4 (L/hx)^2 at N = 8), so that
+  // for L <= 1e-7 hx they are the V = 0 contact's to rounding: bound 64 eps + (L/hx)^2. Before
+  // the weight e^(-t/L) of (B4) took its offset t from positions of order m hx, which moved its
+  // argument by m hx eps/L: d 5.7% and a0 21% off at L = 1e-15 hx, d 5.7e-7 off at 1e-10 hx.
+  const double eps = std::numeric_limits<double>::epsilon();
+  const auto s = solver(1.0);
+  const double load = 5.0 / (3 * 10 / (4 * std::acos(-1.0)));  // a0 = 1 (c = 1/(4 pi))
+  const auto rest = s.solve(BemScene<double>{1.0, c2_ratio, load, 0.0});
+  REQUIRE(rest.converged);
+  const double hx = rest.grid.hx;
+  for (const double q : {1e-15, 1e-13, 1e-11, 1e-9, 1e-7}) {
+    const auto r = s.solve(BemScene<double>{1.0, c2_ratio, load, q * hx});  // tau = 1: L = V
+    INFO("L/hx = " << q);
+    REQUIRE(r.converged);
+    REQUIRE(r.contact_cells == rest.contact_cells);
+    const double bound = 64 * eps + q * q;
+    CHECK(std::abs(r.d / rest.d - 1) <= bound);
+    CHECK(std::abs(r.a0 / rest.a0 - 1) <= bound);
+    CHECK(std::abs(r.l / rest.l - 1) <= bound);
+    CHECK(r.chi > 0);
+  }
+}
+
 TEST_CASE("bem extremes: solutions scale exactly under powers of two of length and force",
           "[bem]") {
   // Lengths x 2^j (C1, C2 / 2^j, V x 2^j) and loads x 2^(3j) ... with mu_D fixed, or the

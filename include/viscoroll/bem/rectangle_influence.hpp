@@ -197,34 +197,38 @@ requires NodalQuadratureRule<Quadrature, Real> std::vector<Real> memory_row(int 
   const int depth = kink_grading_depth(y, hx, hy);
   const auto& gx = Quadrature::nodes();
   const auto& gw = Quadrature::weights();
+  // The panel [origin + a, origin + b] in offsets from the weight's origin: the weight
+  // e^(-t/L) takes t itself, not s - origin formed from s ~ m hx, which is off by m hx eps and
+  // made the weight's argument wrong by m hx eps/L (a d 6% off at L = 1e-15 hx, N = 8); only
+  // K_e's argument origin + t rounds, as K_e's own evaluation does.
   const auto panel = [&](Real a, Real b, Real origin) {
     const Real half = (b - a) / 2, mid = (a + b) / 2;
     Real s = 0;
     for (std::size_t k = 0; k < static_cast<std::size_t>(Quadrature::points); ++k) {
-      const Real x = mid + half * Real(gx[k]);
-      s += Real(gw[k]) * exp(-(x - origin) / L) * ke(x);
+      const Real t = mid + half * Real(gx[k]);
+      s += Real(gw[k]) * exp(-t / L) * ke(origin + t);
     }
     return s * half / L;
   };
   std::vector<Real> points;
-  // (1/L) int_{x0}^{x0 + hx} e^(-(s - x0)/L) K_e(s, y) ds on graded panels.
+  // (1/L) int_0^hx e^(-t/L) K_e(x0 + t, y) dt on graded panels (offsets t from x0).
   const auto step_integral = [&](Real x0) {
     points.clear();
-    const Real x1 = x0 + hx;
-    const Real end = std::min(x1, x0 + L * u_max);
-    points.push_back(x0);
+    const Real end = std::min(hx, L * u_max);
+    points.push_back(Real(0));
     points.push_back(end);
-    points.push_back(std::min(x0 + hx / 2, end));
+    points.push_back(std::min(hx / 2, end));
     for (const Real e : {-hx / 2, hx / 2}) {
-      if (!(e > x0 && e < x1)) continue;
+      const Real te = e - x0;  // the kink's offset
+      if (!(te > 0 && te < hx)) continue;
       for (int k = 1; k <= depth; ++k) {
         const Real off = (hx / 2) * std::ldexp(Real(1), -k);
-        for (const Real p : {e - off, e + off})
-          if (p > x0 && p < end) points.push_back(p);
+        for (const Real p : {te - off, te + off})
+          if (p > 0 && p < end) points.push_back(p);
       }
     }
     // The exponential weight on panels at most 8 L wide.
-    for (Real u = 8; u < u_max && x0 + L * u < end; u += 8) points.push_back(x0 + L * u);
+    for (Real u = 8; u < u_max && L * u < end; u += 8) points.push_back(L * u);
     std::sort(points.begin(), points.end());
     Real s = 0;
     for (std::size_t k = 1; k < points.size(); ++k)
@@ -239,7 +243,7 @@ requires NodalQuadratureRule<Quadrature, Real> std::vector<Real> memory_row(int 
   {
     Real t0 = 0, t = t1;
     while (t0 < u_max) {
-      tail += panel(x_max + L * t0, x_max + L * t, x_max);
+      tail += panel(L * t0, L * t, x_max);
       t0 = t;
       t = t < 8 ? 2 * t : t + 8;
       if (t > u_max) t = u_max;
