@@ -21,6 +21,7 @@
 #include <viscoroll/material/prony.hpp>
 
 #include "support/spectrum_scene.hpp"
+#include "support/strict_maxima.hpp"
 
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_line_spectrum_limits {
@@ -86,14 +87,9 @@ TEST_CASE("line spectrum limits: two times far apart give two peaks of chi, far 
     REQUIRE(s.converged);
     chi.push_back(s.chi);
   }
-  int peaks = 0;
-  double lower_peak = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 1; k + 1 < chi.size(); ++k)
-    if (chi[k] > chi[k - 1] && chi[k] > chi[k + 1]) {
-      ++peaks;
-      lower_peak = std::min(lower_peak, chi[k]);
-    }
-  CHECK(peaks == 2);
+  const auto peaks = viscoroll::testing::strict_maxima(chi);
+  CHECK(peaks.count == 2);
+  const double lower_peak = peaks.lowest;
   // V = 1 (k = 28): V tau1 = 1.6e-4 a, V tau2 = 1.6e4 a. chi there is within the plateau's bound
   // C1 (eps1 + eps2) a (measured 1.17e-4 against 1.57e-3), and so far below the lower peak.
   const auto scene = spectrum_scene(1.0);
