@@ -1,4 +1,6 @@
-// viscoroll: one scene solved over many speeds, on every core.
+// viscoroll: one scene solved over many speeds, a list of scenes (loads, speeds, any field), or
+// one scene over speeds with each of several solvers (a material at several temperatures), on
+// every core.
 //
 // The speeds are cut into chunks of fixed length (SweepOptions::chunk) in the order given. Within
 // a chunk the speeds are solved in order and each solve is seeded with the previous converged,
@@ -9,8 +11,8 @@
 #pragma once
 
 #include <algorithm>
-#include <concepts>
 #include <atomic>
+#include <concepts>
 #include <cstddef>
 #include <exception>
 #include <functional>
@@ -72,20 +74,21 @@ bool usable_as_seed(const Solution& s) {
 
 }  // namespace detail
 
-/// Solves `scene` at each of `speeds` (scene.speed is replaced), in chunks of continuation spread
-/// over threads (see the file comment). Returns the solutions in the order of `speeds`. An
-/// exception thrown by a solve (invalid input) is rethrown here, the first in speed order, after
-/// every thread has stopped. `solver.solve` must be safe to call concurrently (every viscoroll
-/// solver is: solve() is const and keeps its work space local).
-template <class Solver, class Scene>
-std::vector<typename Solver::Solution> sweep(
-    const Solver& solver, Scene scene,
-    std::type_identity_t<std::span<const decltype(Scene::speed)>> speeds,
-    const SweepOptions& options = {}) {
-  using Solution = typename Solver::Solution;
+namespace detail {
+
+/// The sweeps' engine: items 0 .. n-1 in rows of `row_length` (the last row may be shorter; a row
+/// never continues into the next), each row cut into chunks of options.chunk, the chunks spread
+/// over threads. solve(i, seed) solves item i from `seed` (nullptr: cold) and returns its
+/// solution; a usable solution seeds the next item of its chunk. Returns the solutions in item
+/// order; rethrows the first exception in item order after every thread has stopped.
+template <class Solution, class Solve>
+std::vector<Solution> run_chunks(std::size_t n, std::size_t row_length, const SweepOptions& options,
+                                 const Solve& solve) {
   options.validate();
-  const std::size_t n = speeds.size();
-  const std::size_t chunks = (n + options.chunk - 1) / options.chunk;
+  row_length = std::max<std::size_t>(row_length, 1);
+  const std::size_t rows = (n + row_length - 1) / row_length;
+  const std::size_t per_row = (row_length + options.chunk - 1) / options.chunk;
+  const std::size_t chunks = rows * per_row;
   std::vector<std::optional<Solution>> results(n);
   std::vector<std::exception_ptr> errors(chunks);
   std::atomic<std::size_t> next_chunk{0};
@@ -93,15 +96,12 @@ std::vector<typename Solver::Solution> sweep(
   std::size_t completed = 0;
 
   auto solve_chunk = [&](std::size_t c) {
-    Scene at = scene;
+    const std::size_t row = c / per_row, first = row * row_length + (c % per_row) * options.chunk;
+    const std::size_t last = std::min({n, (row + 1) * row_length, first + options.chunk});
     const Solution* seed = nullptr;
-    for (std::size_t i = c * options.chunk; i < std::min(n, (c + 1) * options.chunk); ++i) {
-      at.speed = speeds[i];
-      if constexpr (detail::SeededSolver<Solver, Scene>)
-        results[i].emplace(solver.solve(at, seed));
-      else
-        results[i].emplace(solver.solve(at));
-      seed = detail::usable_as_seed(*results[i]) ? &*results[i] : nullptr;
+    for (std::size_t i = first; i < last; ++i) {
+      results[i].emplace(solve(i, seed));
+      seed = usable_as_seed(*results[i]) ? &*results[i] : nullptr;
       if (options.progress) {
         const std::lock_guard<std::mutex> lock(progress_lock);
         options.progress(++completed, n);
@@ -133,6 +133,77 @@ std::vector<typename Solver::Solution> sweep(
   out.reserve(n);
   for (auto& r : results) out.push_back(std::move(*r));
   return out;
+}
+
+/// solver.solve(scene, seed) where the solver takes a seed, else solver.solve(scene).
+template <class Solver, class Scene>
+typename Solver::Solution solve_seeded(const Solver& solver, const Scene& scene,
+                                       const typename Solver::Solution* seed) {
+  if constexpr (SeededSolver<Solver, Scene>)
+    return solver.solve(scene, seed);
+  else
+    return solver.solve(scene);
+}
+
+}  // namespace detail
+
+/// Solves `scene` at each of `speeds` (scene.speed is replaced), in chunks of continuation spread
+/// over threads (see the file comment). Returns the solutions in the order of `speeds`. An
+/// exception thrown by a solve (invalid input) is rethrown here, the first in speed order, after
+/// every thread has stopped. `solver.solve` must be safe to call concurrently (every viscoroll
+/// solver is: solve() is const and keeps its work space local).
+template <class Solver, class Scene>
+std::vector<typename Solver::Solution> sweep(
+    const Solver& solver, Scene scene,
+    std::type_identity_t<std::span<const decltype(Scene::speed)>> speeds,
+    const SweepOptions& options = {}) {
+  using Solution = typename Solver::Solution;
+  return detail::run_chunks<Solution>(speeds.size(), speeds.size(), options,
+                                      [&](std::size_t i, const Solution* seed) {
+                                        Scene at = scene;
+                                        at.speed = speeds[i];
+                                        return detail::solve_seeded(solver, at, seed);
+                                      });
+}
+
+/// Solves each of `scenes` (any of their fields may vary from one to the next: loads, speeds,
+/// curvatures, a roller profile's scene), in chunks of continuation as sweep() over speeds: within
+/// a chunk each scene is seeded with the previous one's converged, iterated solution, so
+/// consecutive scenes should be neighbours. Returns the solutions in the order of `scenes`, the
+/// same bit for bit for any thread count; exceptions as sweep() over speeds.
+template <class Solver, class Scene>
+std::vector<typename Solver::Solution> sweep_scenes(const Solver& solver,
+                                                    const std::vector<Scene>& scenes,
+                                                    const SweepOptions& options = {}) {
+  using Solution = typename Solver::Solution;
+  return detail::run_chunks<Solution>(scenes.size(), scenes.size(), options,
+                                      [&](std::size_t i, const Solution* seed) {
+                                        return detail::solve_seeded(solver, scenes[i], seed);
+                                      });
+}
+
+/// Solves `scene` with each of `solvers` (one material each: a spectrum at each of several
+/// temperatures, at_temperature() in material/temperature_shift.hpp, or any other family) at each
+/// of `speeds`. Returns solvers.size() x speeds.size() solutions, row k (solver k) after row
+/// k - 1, each row the speed sweep of its solver: cut into chunks of continuation that never
+/// cross into another row, all rows' chunks spread over the threads together. The same bit for
+/// bit for any thread count, and row k equals sweep(solvers[k], scene, speeds, options); an
+/// empty `speeds` gives no solutions;
+/// exceptions as sweep() over speeds, the first in the order of the result.
+template <class Solver, class Scene>
+std::vector<typename Solver::Solution> sweep_solvers(
+    const std::vector<Solver>& solvers, Scene scene,
+    std::type_identity_t<std::span<const decltype(Scene::speed)>> speeds,
+    const SweepOptions& options = {}) {
+  using Solution = typename Solver::Solution;
+  const std::size_t m = speeds.size();
+  if (m == 0) return {};
+  return detail::run_chunks<Solution>(solvers.size() * m, m, options,
+                                      [&](std::size_t i, const Solution* seed) {
+                                        Scene at = scene;
+                                        at.speed = speeds[i % m];
+                                        return detail::solve_seeded(solvers[i / m], at, seed);
+                                      });
 }
 
 }  // namespace viscoroll
