@@ -118,14 +118,8 @@ TEST_CASE("bem spectrum: two times far apart give two peaks of chi, far below th
   // V = 10^-4.25, chi = 0.1070, and V = 10^3.75, chi = 0.2024; the line solver: 0.1075, 0.2030)
   // and falls between them. 57 speeds V = 1e-7 ... 1e7, four a decade, as the line solver's test.
   const auto s = solver(far_apart(1e-4, 1e4), 8);
-  std::vector<double> chi;
-  for (int k = 0; k <= 56; ++k) {
-    const double speed = std::pow(10.0, -7 + 0.25 * k);
-    const auto sol = s.solve(scene(speed));
-    CAPTURE(speed, sol.reason);
-    REQUIRE(sol.converged);
-    chi.push_back(sol.chi);
-  }
+  const auto chi = viscoroll::testing::chi_over_speeds(
+      [&](double speed) { return s.solve(scene(speed)); }, -7, 0.25, 57);
   const auto peaks = viscoroll::testing::strict_maxima(chi);
   CHECK(peaks.count == 2);
   const double lower_peak = peaks.lowest;

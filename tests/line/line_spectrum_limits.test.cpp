@@ -79,14 +79,8 @@ TEST_CASE("line spectrum limits: two times far apart give two peaks of chi, far 
   // relaxed (V tau1 <= sqrt(eps) a0) and the solve is the standard linear solid's, whose slow
   // regime ends in a least-squares minimum at one speed; the peaks are counted the same.
   const Solver solver(far_apart(1e-4, 1e4), LineOptions{.terms = 4});
-  std::vector<double> chi;
-  for (int k = 0; k <= 56; ++k) {
-    const double speed = std::pow(10.0, -7 + 0.25 * k);
-    const auto s = solver.solve(spectrum_scene(speed));
-    CAPTURE(speed, s.reason);
-    REQUIRE(s.converged);
-    chi.push_back(s.chi);
-  }
+  const auto chi = viscoroll::testing::chi_over_speeds(
+      [&](double speed) { return solver.solve(spectrum_scene(speed)); }, -7, 0.25, 57);
   const auto peaks = viscoroll::testing::strict_maxima(chi);
   CHECK(peaks.count == 2);
   const double lower_peak = peaks.lowest;

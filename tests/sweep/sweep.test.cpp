@@ -12,6 +12,7 @@
 
 #include "support/paper_scene.hpp"
 #include "support/same_line_solution.hpp"
+#include "support/serial_continuation.hpp"
 
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_sweep {
@@ -39,14 +40,10 @@ TEST_CASE("sweep: the line solver's chunked continuation, bit for bit for any th
   const viscoroll::LineSolverD solver(paper.material, line_options);
   const std::vector<double> speeds = log_speeds(0.05, 20, 10);  // tau = 1: V tau/a0 = speed
 
-  // The serial continuation the sweep promises, written out: chunks of 4 (4, 4, 2 speeds).
-  std::vector<viscoroll::LineSolverD::Solution> expected;
-  for (std::size_t i = 0; i < speeds.size(); ++i) {
-    const viscoroll::LineSolverD::Solution* seed = nullptr;
-    if (i % 4 != 0 && expected.back().converged && expected.back().iterations > 0)
-      seed = &expected.back();
-    expected.push_back(solver.solve(paper.scene(speeds[i]), seed));
-  }
+  // The serial continuation the sweep promises: chunks of 4 (4, 4, 2 speeds).
+  std::vector<viscoroll::LineScene<double>> scenes;
+  for (const double v : speeds) scenes.push_back(paper.scene(v));
+  const auto expected = viscoroll::testing::serial_continuation(solver, scenes, 4);
 
   for (unsigned threads : {1u, 2u, 3u}) {
     SweepOptions options;

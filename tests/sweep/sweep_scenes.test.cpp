@@ -15,6 +15,7 @@
 
 #include "support/paper_scene.hpp"
 #include "support/same_line_solution.hpp"
+#include "support/serial_continuation.hpp"
 
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_sweep_scenes {
@@ -36,13 +37,7 @@ TEST_CASE("sweep scenes: loads in chunks of continuation, bit for bit for any th
     scenes.push_back(s);
   }
   // The serial continuation: chunks of 3 (3, 3, 1 scenes).
-  std::vector<viscoroll::LineSolverD::Solution> expected;
-  for (std::size_t i = 0; i < scenes.size(); ++i) {
-    const viscoroll::LineSolverD::Solution* seed = nullptr;
-    if (i % 3 != 0 && expected.back().converged && expected.back().iterations > 0)
-      seed = &expected.back();
-    expected.push_back(solver.solve(scenes[i], seed));
-  }
+  const auto expected = viscoroll::testing::serial_continuation(solver, scenes, 3);
   for (unsigned threads : {1u, 2u, 3u}) {
     SweepOptions options;
     options.chunk = 3;
