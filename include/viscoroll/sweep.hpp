@@ -187,17 +187,16 @@ std::vector<typename Solver::Solution> sweep_scenes(const Solver& solver,
 /// of `speeds`. Returns solvers.size() x speeds.size() solutions, row k (solver k) after row
 /// k - 1, each row the speed sweep of its solver: cut into chunks of continuation that never
 /// cross into another row, all rows' chunks spread over the threads together. The same bit for
-/// bit for any thread count, and row k equals sweep(solvers[k], scene, speeds, options); an
-/// empty `speeds` gives no solutions;
-/// exceptions as sweep() over speeds, the first in the order of the result.
+/// bit for any thread count, and row k equals sweep(solvers[k], scene, speeds, options); empty
+/// `speeds` give no solutions. Exceptions as sweep() over speeds, the first in the order of the
+/// result.
 template <class Solver, class Scene>
 std::vector<typename Solver::Solution> sweep_solvers(
     const std::vector<Solver>& solvers, Scene scene,
     std::type_identity_t<std::span<const decltype(Scene::speed)>> speeds,
     const SweepOptions& options = {}) {
   using Solution = typename Solver::Solution;
-  const std::size_t m = speeds.size();
-  if (m == 0) return {};
+  const std::size_t m = speeds.size();  // m = 0: no items, no i % m
   return detail::run_chunks<Solution>(solvers.size() * m, m, options,
                                       [&](std::size_t i, const Solution* seed) {
                                         Scene at = scene;

@@ -75,9 +75,9 @@ TEST_CASE("bem extremes: a memory length far under a cell is the long-term conta
           "[bem]") {
   // M_L = K_e + O(L) (B3), and the contact's a0, l and d move at second order in L (the first
   // order is the shift b ~ L, measured a0 - 1.1e-2 (L/hx)^2, d - 5e-4 (L/hx)^2 at N = 8), so that
-  // for L <= 1e-7 hx they are the V = 0 contact's to rounding: bound 64 eps + (L/hx)^2. Before
-  // the weight e^(-t/L) of (B4) took its offset t from positions of order m hx, which moved its
-  // argument by m hx eps/L: d 5.7% and a0 21% off at L = 1e-15 hx, d 5.7e-7 off at 1e-10 hx.
+  // for L <= 1e-7 hx they are the V = 0 contact's to rounding: bound 64 eps + (L/hx)^2. The case
+  // of docs/bem.md, B4: an offset t of (B4)'s weight e^(-t/L) formed from positions of order m hx
+  // moves its argument by m hx eps/L (d 5.7% and a0 21% off at L = 1e-15 hx, 5.7e-7 at 1e-10 hx).
   const double eps = std::numeric_limits<double>::epsilon();
   const auto s = solver(1.0);
   const double load = 5.0 / (3 * 10 / (4 * std::acos(-1.0)));  // a0 = 1 (c = 1/(4 pi))

@@ -20,10 +20,10 @@ using viscoroll::bem::MemoryRows;
 TEST_CASE("bem: memory rows of many lengths at once are memory_row's", "[bem]") {
   // L/hx from 1/64 (the shared panels graded towards X_i) to 1e17 (near the glassy cut of
   // BemSolver), on the kinked row Y = 0 (graded to the last bit), a row inside the kink's reach
-  // (hy < hx here: |Y| - hy/2 < hx) and smooth rows. The two are different panels of the same integrals
-  // and differ by rounding, which the recurrence (B4) accumulates over up to 2m step integrals of
-  // a few dozen nodes each: 1e-12 ~ 2m 100 eps; measured at most 4.9e-15 here (both weights take
-  // the panels' offsets from X_i, so no error of m hx eps/L enters).
+  // (hy < hx here: |Y| - hy/2 < hx) and smooth rows. The two are different panels of the same
+  // integrals and differ by rounding, which the recurrence (B4) accumulates over up to 2m step
+  // integrals of a few dozen nodes each: 1e-12 ~ 2m 100 eps; measured at most 4.9e-15 here (both
+  // weights take the panels' offsets from X_i, so no error of m hx eps/L enters).
   const double hx = 0.1, hy = 0.06;
   const int m = 20;
   const std::vector<double> lengths{hx / 64, hx / 17,  hx / 8,   hx / 3,    hx,

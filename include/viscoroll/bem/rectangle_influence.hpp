@@ -198,9 +198,9 @@ requires NodalQuadratureRule<Quadrature, Real> std::vector<Real> memory_row(int 
   const auto& gx = Quadrature::nodes();
   const auto& gw = Quadrature::weights();
   // The panel [origin + a, origin + b] in offsets from the weight's origin: the weight
-  // e^(-t/L) takes t itself, not s - origin formed from s ~ m hx, which is off by m hx eps and
-  // made the weight's argument wrong by m hx eps/L (a d 6% off at L = 1e-15 hx, N = 8); only
-  // K_e's argument origin + t rounds, as K_e's own evaluation does.
+  // e^(-t/L) takes t itself (s - origin formed from s ~ m hx would be off by m hx eps, the
+  // weight's argument by m hx eps/L, far beyond rounding for L << hx); only K_e's argument
+  // origin + t rounds, as K_e's own evaluation does (docs/bem.md, B4).
   const auto panel = [&](Real a, Real b, Real origin) {
     const Real half = (b - a) / 2, mid = (a + b) / 2;
     Real s = 0;
