@@ -338,6 +338,38 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
     CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
 }
 
+TEST_CASE("bessel_i2_over_i0_fast: within 2.5 eps of the 50-digit ratio; below 4 and in other "
+          "types the accurate function",
+          "[special]") {
+  using viscoroll::special::bessel_i2_over_i0;
+  using viscoroll::special::bessel_i2_over_i0_fast;
+  // From x = 4 on, 1 - 2 r/x with r = bessel_i1_over_i0_fast(x) (within 1.79 eps, measured in the
+  // test above): the subtraction amplifies r's error by (1 - I2/I0)/(I2/I0) <= 0.76 (at x = 4),
+  // and adds the rounding of 2 r/x and of the difference, half an ulp each: at most 2.5 eps.
+  // Against I2/I0 = 1 - 2 (I1/I0)/x in cpp_bin_float_50 (I1/I0 from Boost below 21, from
+  // Hankel's sums above, as in the test above) on a geometric grid of [4, 1e6].
+  double worst = 0;
+  for (double x = 4; x < 1e6; x *= 1.01) {  // 1250 points
+    const Mp50 big(x);
+    const Mp50 ratio =
+        x < 21 ? Mp50(boost::math::cyl_bessel_i(Mp50(1), big) / boost::math::cyl_bessel_i(Mp50(0), big))
+               : viscoroll::special::bessel_i1_over_i0(big);
+    const Mp50 exact = 1 - 2 * ratio / big;
+    worst = std::max(worst, static_cast<double>(abs((Mp50(bessel_i2_over_i0_fast(x)) - exact) /
+                                                    exact) /
+                                                std::numeric_limits<double>::epsilon()));
+  }
+  INFO("worst error " << worst << " eps");
+  CHECK(worst <= 2.5);
+  for (const double x : {0.0, 1e-3, 0.5, 3.0, std::nextafter(4.0, 0.0)})
+    CHECK(bessel_i2_over_i0_fast(x) == bessel_i2_over_i0(x));
+  CHECK(bessel_i2_over_i0_fast(std::numeric_limits<double>::infinity()) == 1);
+  for (const float x : {1e-3f, 3.0f, 9.5f, 40.0f})
+    CHECK(bessel_i2_over_i0_fast(x) == bessel_i2_over_i0(x));
+  for (const long double x : {1e-3L, 3.0L, 23.0L, 40.0L})
+    CHECK(bessel_i2_over_i0_fast(x) == bessel_i2_over_i0(x));
+}
+
 TEST_CASE("bessel_i1_over_i0_fast: the interpolant's table", "[special]") {
   // detail::kI1OverI0Pieces recomputed as its header says: on piece k the interpolant of
   // r = I1/I0 (of r/x in z = x^2 on piece 0) at the 14 Chebyshev points of the first kind, its
