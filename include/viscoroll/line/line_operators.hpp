@@ -236,8 +236,10 @@ Real exterior_right(const LineNodes<Real>& nd, const std::vector<Real>& dq, Real
   const Real ends_l =
       -(log1p(x0 * x0 / (2 * d1 * (h1 + d1))) + log1p(x0 * x0 / (2 * d2 * (h2 + d2))));
   Real ends_2 = 0, ends_2_x0 = 0, ends_2_l = 0;
+  // g = hypot(x_t, d) as x0 sqrt(u^2 + (d/x0)^2), a square root instead of hypot (as above).
+  const Real q1 = (d1 / x0) * (d1 / x0), q2 = (d2 / x0) * (d2 / x0);
   for (std::size_t k = 0; k < nt; ++k) {
-    const Real g1 = hypot(xk[k], d1), g2 = hypot(xk[k], d2);
+    const Real g1 = x0 * sqrt(uk2[k] + q1), g2 = x0 * sqrt(uk2[k] + q2);
     const Real a1 = 1 / (g1 * (g1 + d1)), a2 = 1 / (g2 * (g2 + d2));
     ends_2 += wk[k] * xk[k] * (a1 + a2);
     if (slopes != nullptr) {

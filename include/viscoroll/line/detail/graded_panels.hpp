@@ -158,8 +158,9 @@ void append_log_mapped_nodes(std::vector<Real>& t, std::vector<Real>& w, Real le
   for_each_equal_panel_node<Quadrature>(Real(0), Real(log1p(length / c)),
                                         strip_panel_width<Quadrature>(strip, tolerance),
                                         [&](Real v, Real weight) {
-                                          t.push_back(c * expm1(v));
-                                          w.push_back(weight * c * exp(v));
+                                          const Real em1 = expm1(v);  // e^v = 1 + em1
+                                          t.push_back(c * em1);
+                                          w.push_back(weight * c * (1 + em1));
                                         });
 }
 
