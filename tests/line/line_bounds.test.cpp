@@ -45,9 +45,7 @@ TEST_CASE("line bounds: the paper's scene keeps G >= 0, (B1), (B2) and (B3) at e
   // V tau/a0 from 0.2 (above the slow regime, where N = 6 resolves the solution) to 1e3, N = 6:
   // no bound warning, and each bound with its margin.
   const viscoroll::testing::PaperScene paper;
-  viscoroll::LineOptions options;
-  options.terms = 6;
-  const viscoroll::LineSolverD solver(paper.material, options);
+  const viscoroll::LineSolverD solver = paper.solver(6);
   const double f = 9;
   for (double v : {0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 50.0, 200.0, 1000.0}) {
     INFO("V tau/a0 = " << v);
@@ -100,9 +98,7 @@ TEST_CASE("line bounds: the sweep of the figures' 100 speeds converges at the de
   // default), swept as viscoroll-solve sweeps (chunks of 16, each speed seeded with its chunk's
   // last solution): every speed converged, a root or a certified least-squares minimum.
   const viscoroll::testing::PaperScene paper;
-  viscoroll::LineOptions options;
-  options.terms = 6;
-  const viscoroll::LineSolverD solver(paper.material, options);
+  const viscoroll::LineSolverD solver = paper.solver(6);
   std::vector<double> speeds;
   for (int i = 0; i < 100; ++i) speeds.push_back(std::pow(10.0, -3 + 6 * i / 99.0));
   viscoroll::SweepOptions sweep;
@@ -121,9 +117,7 @@ TEST_CASE("line bounds: the log-spaced sweep of issue 24 converges at the defaul
   // "Jacobian undefined". 1,000 speeds (about 25 s of CPU); VISCOROLL_SWEEP_SPEEDS=10000 runs
   // the 10,000 of docs/line-solver.md (about 10 min of CPU).
   const viscoroll::testing::PaperScene paper;
-  viscoroll::LineOptions options;
-  options.terms = 6;
-  const viscoroll::LineSolverD solver(paper.material, options);
+  const viscoroll::LineSolverD solver = paper.solver(6);
   int count = 1000;
   if (const char* text = std::getenv("VISCOROLL_SWEEP_SPEEDS")) count = std::atoi(text);
   REQUIRE(count >= 2);

@@ -15,6 +15,12 @@ struct PaperScene {
     const double load = 5.0 / (3 * 10 * material.instantaneous_compliance());
     return {1, (std::log(20.0) - 1) / 25, load, vtau};
   }
+  /// The line solver of this material at N = terms, every other option the default.
+  LineSolverD solver(int terms) const {
+    LineOptions options;
+    options.terms = terms;
+    return LineSolverD(material, options);
+  }
 };
 
 }  // namespace viscoroll::testing

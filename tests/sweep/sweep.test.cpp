@@ -35,9 +35,7 @@ std::vector<double> log_speeds(double lo, double hi, int n) {
 TEST_CASE("sweep: the line solver's chunked continuation, bit for bit for any thread count",
           "[sweep]") {
   const viscoroll::testing::PaperScene paper;
-  viscoroll::LineOptions line_options;
-  line_options.terms = 3;
-  const viscoroll::LineSolverD solver(paper.material, line_options);
+  const viscoroll::LineSolverD solver = paper.solver(3);
   const std::vector<double> speeds = log_speeds(0.05, 20, 10);  // tau = 1: V tau/a0 = speed
 
   // The serial continuation the sweep promises: chunks of 4 (4, 4, 2 speeds).

@@ -27,9 +27,7 @@ using viscoroll::testing::same_bits;
 TEST_CASE("sweep scenes: loads in chunks of continuation, bit for bit for any thread count",
           "[sweep]") {
   const viscoroll::testing::PaperScene paper;
-  viscoroll::LineOptions line_options;
-  line_options.terms = 3;
-  const viscoroll::LineSolverD solver(paper.material, line_options);
+  const viscoroll::LineSolverD solver = paper.solver(3);
   std::vector<viscoroll::LineScene<double>> scenes;
   for (int i = 0; i < 7; ++i) {
     auto s = paper.scene(0.5);
