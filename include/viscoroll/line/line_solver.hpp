@@ -699,8 +699,9 @@ class LineSolver {
       // V tau, f > 0) and for the first moment.
       const Real alpha = strip_alpha(a, sol.vtau, sol.f);
       const Real r1 = special::bessel_i1_over_i0_fast(alpha);
+      const Real b = sol.shape.b(y);
       const auto s = sol.vtau > 0 && sol.f > 0
-                         ? strip_functions_from_ratio(sol.c1, a, sol.shape.b(y), sol.vtau, sol.f, r1)
+                         ? strip_functions_from_ratio(sol.c1, a, b, sol.vtau, sol.f, r1)
                          : sol.functions(y);
       const Real vn = sol.c1 / 4 *
                       strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, r1,

@@ -92,10 +92,10 @@ namespace viscoroll::numerics {
 /// reported `undefined`). x and r hold the last accepted iterate on return (r = problem(x)).
 /// The Hessian is J^T J + S, S from detail::second_order_term, kept from step to step (it varies
 /// slowly): taken to steer at the start and where a stale S finds no step, to certify where a
-/// steering S finds none and before the stop is trusted. Steps solve
-/// (J^T J + S + mu I) s = -g in the eigenbasis of J^T J + S, mu = 0 when that is positive
-/// definite, else from 2 |lambda_min| up by factors of 8; accepted when phi falls. Converged
-/// (M4): the Hessian with S taken at the point to certify positive definite and Newton's predicted decrease
+/// steering S finds none and before the stop is trusted. Steps solve (J^T J + S + mu I) s = -g
+/// in the eigenbasis of J^T J + S, mu = 0 when that is positive definite, else from
+/// 2 |lambda_min| up by factors of 8; accepted when phi falls. Converged (M4): the Hessian with
+/// S taken at the point to certify positive definite and Newton's predicted decrease
 /// g^T H^-1 g / 2 below the rounding of phi, 16 eps sqrt(m) |r| (each scaled equation sums terms
 /// of order one): a strict local minimum. A residual below the root tolerance on the way returns
 /// `root_near`.
