@@ -656,7 +656,17 @@ class LineSolver {
     sol.reason = std::move(reason);
     sol.iterations = iterations;
     sol.residual = rmax;
-    sol.chi = rolling_friction(sol);
+    // chi's graded panels halve toward the end y = l, where a(y) vanishes like a square root: an
+    // n-point rule there errs by ~(3 + sqrt 8)^(-2n) (detail/graded_panels.hpp), 7e-10 at n = 6.
+    // Integrals exact to rounding (quadrature_tolerance 0) take at least the 12-point rule; a
+    // tolerance, the solver's own rule (docs/line-solver.md, "Rolling friction").
+    if constexpr (Quadrature::points < 12) {
+      sol.chi = options_.quadrature_tolerance > 0
+                    ? rolling_friction<Quadrature>(sol)
+                    : rolling_friction<GaussLegendre<Real, 12>>(sol);
+    } else {
+      sol.chi = rolling_friction<Quadrature>(sol);
+    }
     add_warnings(sol, u, std::same_as<typename Residual::drop_type, ParabolicDrop>);
     if (converged && !root) sol.warnings.push_back(minimum_warning(rmax));
     return sol;
@@ -680,13 +690,14 @@ class LineSolver {
   /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q) = (C1/4) strip_first_moment
   /// (Eq. 54 strip by strip in the form (P7); docs/theory.md section 4).
   /// Over [0, l] for a symmetric contact (the ratio of two integrals over half of it), over both
-  /// halves of an asymmetric one (nodes at distances from its centre). I1/I0 and I2/I0 from the
-  /// double interpolants (within 2.5 eps) at each of the ~300 nodes.
+  /// halves of an asymmetric one (nodes at distances from its centre), on graded panels of the
+  /// Rule. I1/I0 and I2/I0 from the double interpolants (within 2.5 eps) at each node.
+  template <class Rule>
   static Real rolling_friction(const Solution& sol) {
     std::vector<Real> nodes, weights;
     const Real l = sol.shape.l;
-    detail::append_graded_nodes<Quadrature>(nodes, weights, l, l / 2,
-                                            l * std::numeric_limits<Real>::epsilon() * 16);
+    detail::append_graded_nodes<Rule>(nodes, weights, l, l / 2,
+                                      l * std::numeric_limits<Real>::epsilon() * 16);
     const bool both = sol.shape.asymmetric();
     const std::size_t half = nodes.size();
     Real num = 0, den = 0;
