@@ -704,18 +704,12 @@ class LineSolver {
     for (std::size_t k = 0; k < (both ? 2 * half : half); ++k) {
       const std::size_t j = k % half;
       const Real y = both ? Real(sol.shape.centre + (k < half ? nodes[j] : -nodes[j])) : nodes[j];
-      const Real a = sol.shape.a(y);
-      if (!(a > 0)) continue;
-      // I1/I0 once per node: for the strip functions (as sol.functions(y) takes them where
-      // V tau, f > 0) and for the first moment.
-      const Real alpha = strip_alpha(a, sol.vtau, sol.f);
-      const Real r1 = special::bessel_i1_over_i0_fast(alpha);
-      const Real b = sol.shape.b(y);
-      const auto s = sol.vtau > 0 && sol.f > 0
-                         ? strip_functions_from_ratio(sol.c1, a, b, sol.vtau, sol.f, r1)
-                         : sol.functions(y);
+      const auto s = sol.functions(y);
+      if (!(s.a > 0)) continue;
+      const Real alpha = strip_alpha(s.a, sol.vtau, sol.f);
       const Real vn = sol.c1 / 4 *
-                      strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, r1,
+                      strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f,
+                                         special::bessel_i1_over_i0_fast(alpha),
                                          special::bessel_i2_over_i0_fast(alpha));
       num += weights[j] * vn;
       den += weights[j] * s.f0;

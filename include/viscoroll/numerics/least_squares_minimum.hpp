@@ -112,15 +112,15 @@ LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<
   LeastSquaresOutcome out{.reason = "iteration limit (least-squares minimisation)"};
   Matrix jac(m, n), s_part(n, n);
   Vector rt(m);
-  // s_part was taken at the current x to steer (forward differences) or to certify (central).
-  bool fresh = false, certified = false;
-  Real mu = 0;
-  const auto second_order = [&](const Matrix& jtj, const Vector& g,
-                                detail::SecondOrderAccuracy accuracy) {
-    certified = accuracy == detail::SecondOrderAccuracy::certifying;
-    return fresh = detail::second_order_term(problem, x, jtj, g, accuracy, s_part);
-  };
   using detail::SecondOrderAccuracy;
+  // Where and how s_part was taken: at an earlier x, or at the current x to steer or to certify.
+  enum class Taken { earlier, to_steer, to_certify } taken = Taken::earlier;
+  Real mu = 0;
+  const auto second_order = [&](const Matrix& jtj, const Vector& g, SecondOrderAccuracy accuracy) {
+    if (!detail::second_order_term(problem, x, jtj, g, accuracy, s_part)) return false;
+    taken = accuracy == SecondOrderAccuracy::certifying ? Taken::to_certify : Taken::to_steer;
+    return true;
+  };
   for (; out.iterations < options.max_iterations; ++out.iterations) {
     if (!problem.jacobian(x, r, jac)) return out.jacobian_undefined();
     if (r.cwiseAbs().maxCoeff() <= options.root_tolerance) {
@@ -143,7 +143,7 @@ LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<
       const Real predicted =
           lmin > 0 ? Real((qg.array().square() / lambda.array()).sum() / 2) : Real(0);
       if (lmin > 0 && predicted <= floor) {
-        if (!certified) {
+        if (taken != Taken::to_certify) {
           if (!second_order(jtj, g, SecondOrderAccuracy::certifying))
             return out.jacobian_undefined();
           continue;  // the stop is trusted with S taken here to certify only
@@ -179,10 +179,11 @@ LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<
           mu = std::max(8 * mu, 2 * std::max(-lmin, Real(0)) + eps * lmax);
         }
       }
-      if (accepted || certified) break;
+      if (accepted || taken == Taken::to_certify) break;
       // A stale S: take it here to steer and try again; a steering S: take it to certify.
       if (!second_order(jtj, g,
-                        fresh ? SecondOrderAccuracy::certifying : SecondOrderAccuracy::steering))
+                        taken == Taken::earlier ? SecondOrderAccuracy::steering
+                                                : SecondOrderAccuracy::certifying))
         return out.jacobian_undefined();
       mu = 0;
     }
@@ -190,7 +191,7 @@ LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<
       out.reason = "no descent step (least-squares minimisation)";
       return out;
     }
-    fresh = certified = false;
+    taken = Taken::earlier;
     mu /= 8;
   }
   problem(x, r);
