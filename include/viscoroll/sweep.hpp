@@ -4,8 +4,8 @@
 //
 // The speeds are cut into chunks of fixed length (SweepOptions::chunk) in the order given. Within
 // a chunk the speeds are solved in order and each solve is seeded with the previous converged,
-// iterated solution of the same chunk (continuation, as the command line does); the first speed of
-// a chunk starts cold. The chunks share nothing, so they run on any number of threads, and the
+// iterated solution of the same chunk where that is a root (continuation, as the command line
+// does; a least-squares minimum seeds nothing); the first speed of a chunk starts cold. The chunks share nothing, so they run on any number of threads, and the
 // results, returned in the order of the speeds, are the same bit for bit whatever the thread
 // count: the thread count decides only who solves a chunk, never how.
 #pragma once
@@ -64,12 +64,16 @@ concept SeededSolver = requires(const Solver& solver, const Scene& scene,
   { solver.solve(scene, seed) } -> std::convertible_to<typename Solver::Solution>;
 };
 
-/// A solution seeds the next speed when it converged and came from an iteration: a closed form
-/// (iterations == 0) carries no more than the solver's own cold start.
+/// A solution seeds the next speed when it converged, came from an iteration (a closed form,
+/// iterations == 0, carries no more than the solver's own cold start) and, where the solution
+/// says so, is a root: a least-squares minimum seeds nothing, since the line solver answers a
+/// seeded scene without a root from its cold start anyway (LineSolver::solve).
 template <class Solution>
 bool usable_as_seed(const Solution& s) {
-  if constexpr (requires { s.iterations; }) return s.converged && s.iterations > 0;
-  return s.converged;
+  bool usable = s.converged;
+  if constexpr (requires { s.iterations; }) usable = usable && s.iterations > 0;
+  if constexpr (requires { s.root; }) usable = usable && s.root;
+  return usable;
 }
 
 }  // namespace detail
@@ -168,7 +172,7 @@ std::vector<typename Solver::Solution> sweep(
 
 /// Solves each of `scenes` (any of their fields may vary from one to the next: loads, speeds,
 /// curvatures, a roller profile's scene), in chunks of continuation as sweep() over speeds: within
-/// a chunk each scene is seeded with the previous one's converged, iterated solution, so
+/// a chunk each scene is seeded with the previous one's converged, iterated root, so
 /// consecutive scenes should be neighbours. Returns the solutions in the order of `scenes`, the
 /// same bit for bit for any thread count; exceptions as sweep() over speeds.
 template <class Solver, class Scene>

@@ -3,7 +3,9 @@
 // stops short (one outside the equations' domain) is followed by the cold start, with a warning;
 // any other seed starts the continuation in N, so that the answer is the cold start's root to the
 // iteration's tolerance (issue 24: one answer per scene); a good seed (a neighbouring speed)
-// saves iterations, without a warning.
+// saves iterations, without a warning; a seed from which no root is reached (the iteration stops
+// short of one, above the root tolerance) gives the cold start's answer, bit for bit, without a
+// warning, a least-squares minimum included.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -131,6 +133,47 @@ TEST_CASE("line solver: one answer per scene whatever the seed (issue 24)", "[li
   const auto from_nan = solver.solve(paper.scene(1.0), &nan_seed);
   require_same_solution(from_nan, cold);
   REQUIRE(mentions(from_nan.warnings, "the seed was set aside"));
+}
+
+TEST_CASE("line solver: a seed from which no root is reached gives the cold start's answer",
+          "[line]") {
+  // fast() on the paper's scene, the figures' speeds V tau/a0 = 10^(-3 + 6 i/99). Continued from
+  // i = 13, the seeds follow a second root of the five-term equations (b(0) 14% below the cold
+  // start's at i = 16) that ends in a fold before i = 17, where the cold start has a root: the
+  // iteration from that seed used to end at a least-squares minimum (b(0) 29% off), reported as
+  // "no root here". From a least-squares minimum (i = 5 seeding i = 6, both without a root) the
+  // minimisation from the seed used to run into its iteration limit, 30 times the cold solve.
+  // Both now stop short of a root and give the cold start's answer, bit for bit, without a
+  // warning about the seed.
+  const viscoroll::testing::PaperScene paper;
+  const viscoroll::LineSolverD solver(paper.material, viscoroll::LineOptions::fast());
+  const auto speed = [](int i) { return std::pow(10.0, -3 + 6.0 * i / 99); };
+
+  viscoroll::LineSolverD::Solution seed = solver.solve(paper.scene(speed(13)));
+  for (int i = 14; i <= 16; ++i) {
+    seed = solver.solve(paper.scene(speed(i)), &seed);
+    REQUIRE(seed.root);
+  }
+  const auto cold16 = solver.solve(paper.scene(speed(16)));
+  INFO("b(0) at i = 16: seeded " << seed.b(0.0) << ", cold " << cold16.b(0.0));
+  REQUIRE(std::abs(seed.b(0.0) - cold16.b(0.0)) > 0.1 * std::abs(cold16.b(0.0)));  // two roots
+  const auto cold17 = solver.solve(paper.scene(speed(17)));
+  REQUIRE(cold17.root);
+  const auto seeded17 = solver.solve(paper.scene(speed(17)), &seed);
+  require_same_solution(seeded17, cold17);
+  REQUIRE(seeded17.root);
+  CHECK_FALSE(mentions(seeded17.warnings, "seed"));
+
+  const auto minimum5 = solver.solve(paper.scene(speed(5)));
+  const auto cold6 = solver.solve(paper.scene(speed(6)));
+  REQUIRE(minimum5.converged);
+  REQUIRE_FALSE(minimum5.root);
+  REQUIRE(cold6.converged);
+  REQUIRE_FALSE(cold6.root);
+  const auto seeded6 = solver.solve(paper.scene(speed(6)), &minimum5);
+  require_same_solution(seeded6, cold6);
+  CHECK_FALSE(mentions(seeded6.warnings, "seed"));
+  CHECK(seeded6.warnings == cold6.warnings);
 }
 
 }  // namespace test_line_seed

@@ -425,8 +425,15 @@ class LineSolver {
     Solution seeded = rolling(scene, u, slow, prob, c, start, drop, cold, asymmetric);
     if (seeded.converged) return seeded;
     Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
-    again.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
-                             "): solved again from the cold start");
+    // No root from the seed (its last stage stopped above the root tolerance with a finite
+    // residual): the cold start's answer, a root or the certified minimum, without a warning,
+    // since the seed had no say in it. Any other stop (outside the domain, a root that is not a
+    // contact) is said.
+    const bool no_root = (boost::math::isfinite)(seeded.residual) &&
+                         seeded.residual > root_tolerance();
+    if (!no_root)
+      again.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
+                               "): solved again from the cold start");
     return again;
   }
 
@@ -502,8 +509,12 @@ class LineSolver {
     }
     // The paper's least-squares solution where the equations have no root (the last stage, with
     // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
-    // Levenberg-Marquardt certifies it.
+    // Levenberg-Marquardt certifies it. Only from the cold start: from a seed the iteration stops
+    // short instead, and rolling_from runs the cold start, so that a minimum is never the seed's
+    // (a seed near a fold of its own branch leads to a minimum of |r| where the cold start has a
+    // root, docs/line-solver.md, "Continuation in speed").
     const bool least_squares = minimises();
+    const bool minimise = least_squares && start == nullptr;
     const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
     int iterations = 0;
     for (std::size_t k = 0; k < stages.size(); ++k) {
@@ -529,7 +540,7 @@ class LineSolver {
       iterations += out.iterations;
       // Whether jac is the Jacobian at the returned root (not so once the minimisation ran).
       bool jac_at_root = out.converged;
-      if (last && least_squares && !out.converged && !out.undefined) {
+      if (last && minimise && !out.converged && !out.undefined) {
         out = least_squares_solution(res, x, r, settings, iterations);
         jac_at_root = false;
       }
