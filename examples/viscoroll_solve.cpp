@@ -6,7 +6,8 @@
 // solved by viscoroll::sweep on --threads threads: in chunks of 16 in the given order, line and
 // bem continuing from the previous converged solution of the chunk (any thread count, same result).
 // --method plane: Hunter's plane problem (load per unit length, c2 ignored).
-// --method line: the line-contact solver (--grid N the Chebyshev terms, default 6) for the
+// --method line: the line-contact solver (--grid N the Chebyshev terms, default 6; --setting fast
+// the fast setting, LineOptions::fast() on FastLineSolverD, 5 terms) for the
 // ellipsoid or a roller of finite length (crowned, logarithmic, table; tilted or not) on any
 // material; each line also carries l, y_minus, y_plus, f0_max, f0_max_y
 // (the peak of the load along the roller), d, l0, d0 (the static long-term l and d), terms,
@@ -452,12 +453,16 @@ struct Problem {
                              viscoroll::Tilted<viscoroll::LogarithmicCrown<double>>,
                              viscoroll::Tilted<viscoroll::TabulatedProfile<double>>>>
       roller;
+  /// --setting fast: the line method's fast setting, on 6-point panels (FastLineSolverD) for a
+  /// material of one relaxation time.
+  bool fast = false;
 };
 
 /// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
-/// defaults where not given).
+/// defaults where not given), over LineOptions::fast() with --setting fast.
 viscoroll::LineOptions line_options(const SolveOptions& o) {
-  viscoroll::LineOptions line;
+  viscoroll::LineOptions line =
+      o.setting == "fast" ? viscoroll::LineOptions::fast() : viscoroll::LineOptions{};
   if (o.oversampling) line.oversampling = static_cast<int>(*o.oversampling);
   if (o.max_iterations) line.max_iterations = static_cast<int>(*o.max_iterations);
   if (o.quadrature_tolerance) line.quadrature_tolerance = *o.quadrature_tolerance;
@@ -467,8 +472,10 @@ viscoroll::LineOptions line_options(const SolveOptions& o) {
 }
 
 Problem from_options(const SolveOptions& o) {
-  return {*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
-          o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o), {}};
+  Problem p{*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
+            o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o), {}};
+  p.fast = o.setting == "fast";
+  return p;
 }
 
 /// The prony material of a scene file: its terms, or the fit of its DMA file (the report on
@@ -552,6 +559,7 @@ Problem from_scene(const SolveOptions& o) {
   p.grid = o.grid ? o.grid : scene.grid;
   p.threads = o.threads;
   p.line = line_options(o);
+  p.fast = o.setting == "fast";
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
   std::visit(
@@ -765,12 +773,12 @@ int run_plane(const Problem& p, Output& out) {
       });
 }
 
-/// --grid for the line method: LineOptions::terms, default 6; 4 for a prony material, where the
-/// spectrum's line theory converges at every speed of its validation (docs/line-solver.md,
-/// "Materials with a spectrum").
+/// --grid for the line method: LineOptions::terms, default 6 (the fast setting's 5 with --setting
+/// fast); 4 for a prony material, where the spectrum's line theory converges at every speed of its
+/// validation (docs/line-solver.md, "Materials with a spectrum"), in either setting.
 int line_terms(const Problem& p) {
   constexpr long max_terms = 64;
-  const long default_terms = p.prony ? 4 : 6;
+  const long default_terms = p.prony ? 4 : p.fast ? viscoroll::LineOptions::fast().terms : 6;
   const long n = p.grid.value_or(default_terms);
   if (n < 1 || n > max_terms)
     throw std::invalid_argument(
@@ -784,15 +792,18 @@ int line_terms(const Problem& p) {
 /// previous converged iterated solution of its chunk (continuation; a closed form carries no more
 /// than the solver's own seed). A roller of finite length (tilted or not) is solved by
 /// LineSolver::solve(LineProfileScene), on a spectrum by docs/theory.md (RP5); the ellipsoid by
-/// LineSolver::solve(LineScene).
+/// LineSolver::solve(LineScene). --setting fast: LineOptions::fast() on FastLineSolverD (a
+/// material of one relaxation time) or on the spectrum's solver.
 int run_line(const Problem& p, Output& out) {
   viscoroll::LineOptions options = p.line;
   options.terms = line_terms(p);
-  // A material of one relaxation time over the scene `scene_at(speed)` builds.
-  const auto run_single = [&](auto scene_at) {
+  // A material of one relaxation time over the scene `scene_at(speed)` builds, by the solver
+  // `tag` names (LineSolverD, or FastLineSolverD for the fast setting).
+  const auto run_single_on = [&](auto scene_at, auto tag) {
+    using Solver = typename decltype(tag)::type;
     return run_sweeps(
         p, p.tau, out, scene_at,
-        [&](double tau) { return viscoroll::LineSolverD(material(p, tau), options); },
+        [&](double tau) { return Solver(material(p, tau), options); },
         [&](double tau, const auto& scene, const auto& s, double seconds) {
           const auto peak = s.strip(0.0).peak();
           Record r = {{"method", std::string("line")},
@@ -837,7 +848,9 @@ int run_line(const Problem& p, Output& out) {
         });
   };
   const auto run = [&](auto scene_at) {
-    return p.prony ? run_spectrum(scene_at) : run_single(scene_at);
+    if (p.prony) return run_spectrum(scene_at);
+    return p.fast ? run_single_on(scene_at, std::type_identity<viscoroll::FastLineSolverD>{})
+                  : run_single_on(scene_at, std::type_identity<viscoroll::LineSolverD>{});
   };
   if (p.roller)
     return std::visit(
@@ -991,7 +1004,8 @@ int main(int argc, char** argv) {
                                        std::pair{!options.basis.empty(), "--basis"},
                                        std::pair{bool(options.max_iterations), "--max-iterations"},
                                        std::pair{bool(options.quadrature_tolerance),
-                                                 "--quadrature-tolerance"}})
+                                                 "--quadrature-tolerance"},
+                                       std::pair{!options.setting.empty(), "--setting"}})
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");

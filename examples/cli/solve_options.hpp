@@ -66,17 +66,23 @@ struct SolveOptions {
   /// --quadrature-tolerance TOL (0 <= TOL <= 1e-4; 0: every integral to rounding): the line
   /// method's LineOptions::quadrature_tolerance.
   std::optional<double> quadrature_tolerance;
+  /// --setting default|fast (empty: not given, the default): the line method's fast setting,
+  /// LineOptions::fast() (5 terms unless --grid, integrals to 1e-4, loose intermediate stages)
+  /// on 6-point panels (FastLineSolverD) for a material of one relaxation time; the other line
+  /// options given override it.
+  std::string setting;
 };
 
 inline std::string usage() {
   return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
          "[--csv FILE] [--plot DIR] [--threads N] [--oversampling K] [--basis t2|s|mapped] "
-         "[--max-iterations N] [--quadrature-tolerance TOL]\n"
+         "[--max-iterations N] [--quadrature-tolerance TOL] [--setting default|fast]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
          "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
          "[--plot DIR] [--profile-out FILE.csv] [--threads N] [--oversampling K] "
-         "[--basis t2|s|mapped] [--max-iterations N] [--quadrature-tolerance TOL]";
+         "[--basis t2|s|mapped] [--max-iterations N] [--quadrature-tolerance TOL] "
+         "[--setting default|fast]";
 }
 
 /// A finite number, the whole of `text`.
@@ -110,7 +116,7 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
       "--method", "--mu-d", "--nu",      "--f",          "--tau",   "--speed",
       "--c1",     "--c2",   "--load",    "--grid",       "--scene", "--format",
       "--csv",    "--plot", "--threads", "--temperature", "--oversampling", "--basis",
-      "--max-iterations", "--profile-out", "--quadrature-tolerance"};
+      "--max-iterations", "--profile-out", "--quadrature-tolerance", "--setting"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -151,8 +157,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
             "--grid, --speed, --temperature, --format, --csv, --plot, --profile-out, --threads, "
-            "--oversampling, --basis, --max-iterations and --quadrature-tolerance may go with "
-            "it)");
+            "--oversampling, --basis, --max-iterations, --quadrature-tolerance and --setting may "
+            "go with it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -215,6 +221,12 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     if (o.basis != "t2" && o.basis != "s" && o.basis != "mapped")
       throw std::invalid_argument("viscoroll-solve: --basis expects t2, s or mapped, got '" +
                                   o.basis + "'");
+  }
+  if (given.count("--setting")) {
+    o.setting = std::string(given["--setting"]);
+    if (o.setting != "default" && o.setting != "fast")
+      throw std::invalid_argument("viscoroll-solve: --setting expects default or fast, got '" +
+                                  o.setting + "'");
   }
   if (given.count("--threads")) {
     const std::string_view text = given["--threads"];

@@ -147,7 +147,9 @@ using SolvedPtr = std::shared_ptr<const Solved>;
 /// The solver's discretisation for `method` from the scene's or the caller's grid: line terms
 /// (1..64, default 6; 4 for a Prony material, as the command line), bem elements per semi-axis
 /// (2..512, default 16); throws std::invalid_argument naming `grid`.
-int discretisation(Method method, std::optional<long> grid, bool prony);
+int discretisation(Method method, std::optional<long> grid, bool prony, bool fast = false);
+/// LineOptions::fast().terms (solve_line.cpp, which includes the line solver).
+int fast_line_terms();
 
 /// Seconds since `start`.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -199,7 +201,8 @@ SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, con
     const auto* same = dynamic_cast<const SolvedT*>(start);
     if (!same)
       throw std::invalid_argument(std::string("viscoroll: start must be a result of the ") +
-                                  method_name(method) + " method for this kind of material, got " +
+                                  method_name(method) +
+                                  " method for this kind of material and setting, got " +
                                   method_name(start->method()));
     seed = &same->solution();
   }
@@ -239,7 +242,10 @@ std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
 // The solvers (module.cpp: plane; solve_line.cpp; solve_bem.cpp). `scene` was checked for the
 // method; `start` seeds the iteration (line, bem) when it is a solution of the same method.
 SolvedPtr solve_plane(const SceneSpec& scene, double speed);
-SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start);
+/// fast: the line method's fast setting (LineOptions::fast(); FastLineSolverD for a material of
+/// one relaxation time).
+SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
+                     const Solved* start);
 SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start);
 /// The cell centres x (nx), y (ny) and pressures (ny x nx, row-major) of a bem result; false for
 /// another method.
@@ -250,7 +256,7 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
                                    const SweepOptions& options);
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
-                                  const SweepOptions& options);
+                                  bool fast, const SweepOptions& options);
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
                                  const SweepOptions& options);
 

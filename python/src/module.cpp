@@ -36,9 +36,9 @@ namespace py = pybind11;
 
 namespace viscoroll::python {
 
-int discretisation(Method method, std::optional<long> grid, bool prony) {
+int discretisation(Method method, std::optional<long> grid, bool prony, bool fast) {
   if (method == Method::line) {
-    const long n = grid.value_or(prony ? 4 : 6);
+    const long n = grid.value_or(prony ? 4 : fast ? fast_line_terms() : 6);
     if (n < 1 || n > 64)
       throw std::invalid_argument(
           "viscoroll: grid = " + std::to_string(n) +
@@ -222,7 +222,8 @@ cli::Method to_cli(Method m) {
 /// The command line's checks of a scene against a method (the cylinder is the plane method's
 /// roller; the line method's slender contact; the bem method's c2/c1; the scene's own grid), and
 /// the discretisation: `grid` (the caller's) wins over the scene's.
-int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid) {
+int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid,
+                     bool fast = false) {
   cli::Scene s;
   if (scene.roller.axial && method == Method::bem)
     throw std::invalid_argument(
@@ -242,7 +243,7 @@ int check_for_method(const SceneSpec& scene, Method method, std::optional<long> 
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(reader_message(e.what()));
   }
-  return discretisation(method, grid ? grid : scene.grid, bool(scene.material.prony));
+  return discretisation(method, grid ? grid : scene.grid, bool(scene.material.prony), fast);
 }
 
 std::optional<ShiftLaw<double>> shift_from_cli(const std::optional<cli::ShiftSpec>& shift) {
@@ -385,15 +386,29 @@ py::array_t<double> as_array(const std::vector<double>& values) {
   return out;
 }
 
+/// The line method's setting: None or "default", or "fast" (LineOptions::fast(); the line method
+/// only).
+bool fast_setting(const std::optional<std::string>& setting, Method method) {
+  if (!setting || *setting == "default") return false;
+  if (*setting != "fast")
+    throw std::invalid_argument("viscoroll: setting = '" + *setting +
+                                "' is not a setting: expected None, 'default' or 'fast'");
+  if (method != Method::line)
+    throw std::invalid_argument(std::string("viscoroll: setting = 'fast' is valid only with the "
+                                            "line method, got method '") +
+                                method_name(method) + "'");
+  return true;
+}
+
 SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid, double speed,
-                      const Result* start) {
-  const int n = check_for_method(scene, method, grid);
+                      bool fast, const Result* start) {
+  const int n = check_for_method(scene, method, grid, fast);
   const Solved* seed = start ? start->solved.get() : nullptr;
   switch (method) {
     case Method::plane:
       return solve_plane(scene, speed);
     case Method::line:
-      return solve_line(scene, speed, n, seed);
+      return solve_line(scene, speed, n, fast, seed);
     case Method::bem:
       return solve_bem(scene, speed, n, seed);
   }
@@ -568,7 +583,7 @@ py::object roller_object(const RollerSpec& r) {
 }
 
 constexpr const char* solve_doc = R"doc(
-solve(scene, method=None, grid=None, speed=None, start=None) -> Result
+solve(scene, method=None, grid=None, speed=None, start=None, setting=None) -> Result
 
 Solve one scene at one speed.
 
@@ -589,7 +604,14 @@ speed : float, optional
     Rolling speed >= 0. Default: the scene's only speed (a ValueError if it has none or
     several; use sweep() for several).
 start : Result, optional
-    A result of the same method and material at a nearby speed to continue from (line, bem).
+    A result of the same method, material and setting at a nearby speed to continue from
+    (line, bem).
+setting : {"default", "fast"}, optional
+    line only: "fast" is viscoroll-solve --setting fast, LineOptions::fast() (5 terms unless
+    grid is given, integrals to 1e-4, loose intermediate stages) on 6-point panels: within 1%
+    of the converged solution in a(0), b(0), l, d and chi on the paper's scene at
+    V tau/a0 = 1e-3 ... 1e3, about 1 ms a solve (docs/performance.md, "The fast setting").
+    A Prony material keeps its 4 terms and 12-point panels. Default (None): "default".
 
 Returns
 -------
@@ -613,8 +635,8 @@ Example
 )doc";
 
 constexpr const char* sweep_doc = R"doc(
-sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16, with_results=False)
-    -> dict
+sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16, with_results=False,
+      setting=None) -> dict
 
 Solve one scene over many speeds on several threads (viscoroll::sweep).
 
@@ -629,7 +651,7 @@ Parameters
 scene : Scene
 speeds : sequence of float, optional
     Speeds >= 0, solved in this order; default the scene's speeds.
-method, grid : as for solve().
+method, grid, setting : as for solve().
 threads : int, optional
     Worker threads, 0..4096; None or 0: every core (std::thread::hardware_concurrency()).
 chunk : int, optional
@@ -1004,8 +1026,9 @@ PYBIND11_MODULE(_viscoroll, m) {
   m.def(
       "solve",
       [](const SceneSpec& scene, const std::optional<std::string>& method, std::optional<long> grid,
-         std::optional<double> speed, const Result* start) {
+         std::optional<double> speed, const Result* start, const std::optional<std::string>& setting) {
         const Method which = method_for(scene, method);
+        const bool fast = fast_setting(setting, which);
         double v = 0;
         if (speed) {
           v = *speed;
@@ -1020,26 +1043,29 @@ PYBIND11_MODULE(_viscoroll, m) {
         SolvedPtr solved;
         {
           py::gil_scoped_release release;
-          solved = solve_scene(scene, which, grid, v, start);
+          solved = solve_scene(scene, which, grid, v, fast, start);
         }
         return Result{std::move(solved)};
       },
       py::arg("scene"), py::arg("method") = py::none(), py::arg("grid") = py::none(),
-      py::arg("speed") = py::none(), py::arg("start") = py::none(), solve_doc);
+      py::arg("speed") = py::none(), py::arg("start") = py::none(),
+      py::arg("setting") = py::none(), solve_doc);
 
   m.def(
       "sweep",
       [](const SceneSpec& scene, const std::optional<py::object>& speeds,
          const std::optional<std::string>& method, std::optional<long> grid,
-         std::optional<long> threads, long chunk, bool with_results) {
+         std::optional<long> threads, long chunk, bool with_results,
+         const std::optional<std::string>& setting) {
         const Method which = method_for(scene, method);
+        const bool fast = fast_setting(setting, which);
         std::vector<double> v =
             speeds && !speeds->is_none() ? as_vector(*speeds, "speeds") : scene.speeds;
         if (v.empty())
           throw std::invalid_argument(
               "viscoroll: sweep() needs at least one speed: give speeds= or a scene with speeds");
         check_speeds(v);
-        const int n = check_for_method(scene, which, grid);
+        const int n = check_for_method(scene, which, grid, fast);
         viscoroll::SweepOptions options;
         const long t = threads.value_or(0);
         viscoroll::detail::require(t >= 0 && t <= 4096, "threads", t,
@@ -1056,7 +1082,7 @@ PYBIND11_MODULE(_viscoroll, m) {
               solved = sweep_plane(scene, v, options);
               break;
             case Method::line:
-              solved = sweep_line(scene, v, n, options);
+              solved = sweep_line(scene, v, n, fast, options);
               break;
             case Method::bem:
               solved = sweep_bem(scene, v, n, options);
@@ -1074,5 +1100,5 @@ PYBIND11_MODULE(_viscoroll, m) {
       py::arg("scene"), py::arg("speeds") = py::none(), py::arg("method") = py::none(),
       py::arg("grid") = py::none(), py::arg("threads") = py::none(),
       py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
-      py::arg("with_results") = false, sweep_doc);
+      py::arg("with_results") = false, py::arg("setting") = py::none(), sweep_doc);
 }

@@ -1,5 +1,5 @@
 // viscoroll's Python module: the line-contact solver behind solve_line and sweep_line, over the
-// standard linear solid (LineSolverD) or a Prony series (LineSolver over PronyRelaxation, the
+// standard linear solid (LineSolverD; FastLineSolverD in the fast setting) or a Prony series (LineSolver over PronyRelaxation, the
 // line theory for a spectrum), for the ellipsoid (LineScene) or a scene file's roller of finite
 // length (LineProfileScene, tilted or not; on a spectrum docs/theory.md (RP5)). The fields
 // are those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
@@ -14,12 +14,14 @@
 namespace viscoroll::python {
 namespace {
 
-using Solver = LineSolverD;
 using SpectrumSolver = LineSolver<double, PronyRelaxation<double>>;
 
+/// A line solution of a material of one relaxation time, by Solver (LineSolverD, or
+/// FastLineSolverD for the fast setting).
+template <class Solver>
 class LineSolved final : public Solved {
  public:
-  using Solution = Solver::Solution;
+  using Solution = typename Solver::Solution;
   LineSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
     const auto peak = s_.strip(0.0).peak();
@@ -67,19 +69,21 @@ class LineSpectrumSolved final : public Solved {
   Solution s_;
 };
 
-LineOptions options_for(int terms) {
-  LineOptions options;
+/// The line options at `terms`, over LineOptions::fast() for the fast setting.
+LineOptions options_for(int terms, bool fast) {
+  LineOptions options = fast ? LineOptions::fast() : LineOptions{};
   options.terms = terms;
   return options;
 }
 
-Solver make_solver(const SceneSpec& scene, int terms) {
+template <class Solver>
+Solver make_solver(const SceneSpec& scene, int terms, bool fast) {
   const auto& m = scene.material;
-  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options_for(terms));
+  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options_for(terms, fast));
 }
 
-SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int terms) {
-  return SpectrumSolver(prony_at(scene), options_for(terms));
+SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int terms, bool fast) {
+  return SpectrumSolver(prony_at(scene), options_for(terms, fast));
 }
 
 LineScene<double> line_scene(const SceneSpec& scene, double speed) {
@@ -108,15 +112,23 @@ auto with_profile(const SceneSpec& scene, F f) {
 
 }  // namespace
 
-SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solved* start) {
+int fast_line_terms() { return LineOptions::fast().terms; }
+
+SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
+                     const Solved* start) {
   const auto keys = MaterialKeys::of(scene);
-  // The scene `scene_at` builds at `speed`, by the material's solver.
+  // The scene `scene_at` builds at `speed`, by the material's solver (the setting's).
   const auto solve = [&](auto scene_at) {
     if (scene.material.prony)
-      return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms), scene_at(speed),
-                                              Method::line, start, keys, terms);
-    return solve_seeded<LineSolved>(make_solver(scene, terms), scene_at(speed), Method::line, start,
-                                    keys, terms);
+      return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast),
+                                              scene_at(speed), Method::line, start, keys, terms);
+    if (fast)
+      return solve_seeded<LineSolved<FastLineSolverD>>(make_solver<FastLineSolverD>(scene, terms,
+                                                                                   fast),
+                                                       scene_at(speed), Method::line, start, keys,
+                                                       terms);
+    return solve_seeded<LineSolved<LineSolverD>>(make_solver<LineSolverD>(scene, terms, fast),
+                                                 scene_at(speed), Method::line, start, keys, terms);
   };
   if (scene.roller.axial)
     return with_profile(scene, [&](auto profile) {
@@ -126,16 +138,21 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, const Solv
 }
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
-                                  const SweepOptions& options) {
+                                  bool fast, const SweepOptions& options) {
   const auto keys = MaterialKeys::of(scene);
-  // The scenes `scene_at` builds, every speed checked before any work, by the material's solver.
+  // The scenes `scene_at` builds, every speed checked before any work, by the material's solver
+  // (the setting's).
   const auto sweep = [&](auto scene_at) {
     for (const double v : speeds) scene_at(v);
     if (scene.material.prony)
-      return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms), scene_at(0.0),
-                                              speeds, keys, terms, options);
-    return sweep_seeded<LineSolved>(make_solver(scene, terms), scene_at(0.0), speeds, keys, terms,
-                                    options);
+      return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast),
+                                              scene_at(0.0), speeds, keys, terms, options);
+    if (fast)
+      return sweep_seeded<LineSolved<FastLineSolverD>>(
+          make_solver<FastLineSolverD>(scene, terms, fast), scene_at(0.0), speeds, keys, terms,
+          options);
+    return sweep_seeded<LineSolved<LineSolverD>>(make_solver<LineSolverD>(scene, terms, fast),
+                                                 scene_at(0.0), speeds, keys, terms, options);
   };
   if (scene.roller.axial)
     return with_profile(scene, [&](auto profile) {

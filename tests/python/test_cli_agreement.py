@@ -28,10 +28,11 @@ CASES = [
 TOLERANCE = 1e-12
 
 
-def run_cli(program, scene_path, method, grid, speeds):
-    """The command line's JSON lines for `speeds` (its sweep: chunks of 16 with continuation)."""
+def run_cli(program, scene_path, method, grid, speeds, extra=()):
+    """The command line's JSON lines for `speeds` (its sweep: chunks of 16 with continuation),
+    with the options `extra` after the others."""
     args = [str(program), "--scene", str(scene_path),
-            "--speed", ",".join(repr(float(v)) for v in speeds)]
+            "--speed", ",".join(repr(float(v)) for v in speeds), *extra]
     if method:
         args += ["--method", method]
     if grid:
@@ -61,6 +62,16 @@ def compare(expected, got, where):
             assert close(want, have), f"{where}: {key} = {have!r}, command line {want!r}"
 
 
+def compare_sweep(expected, got, where):
+    """`expected`: the command line's JSON lines; `got`: sweep()'s columns, row by row."""
+    assert len(expected) == len(got["speed"])
+    for i, line in enumerate(expected):
+        row = {key: (value[i].item() if isinstance(value, np.ndarray) else value[i])
+               for key, value in got.items()}
+        row["method"] = line["method"]
+        compare(line, row, f"{where} speed[{i}]")
+
+
 @pytest.mark.parametrize("file,method,grid,indices", CASES,
                          ids=[f"{c[0]}-{c[1] or 'file'}" for c in CASES])
 def test_single_speeds_match_the_command_line(viscoroll_solve, scenes_dir, file, method, grid,
@@ -88,11 +99,27 @@ def test_sweep_matches_the_command_lines_sweep(viscoroll_solve, scenes_dir, file
     expected = run_cli(viscoroll_solve, scenes_dir / file, method, grid, scene.speeds)
     got = vr.sweep(scene, method=method, grid=grid, threads=1)
     assert len(expected) == len(scene.speeds)
-    for i, line in enumerate(expected):
-        row = {key: (value[i].item() if isinstance(value, np.ndarray) else value[i])
-               for key, value in got.items()}
-        row["method"] = line["method"]
-        compare(line, row, f"{file} speed[{i}]")
+    compare_sweep(expected, got, file)
+
+
+@pytest.mark.parametrize("file", ["paper.json", "crowned_roller_line.json",
+                                  "crowned_roller_prony_line.json"])
+def test_the_fast_setting_matches_the_command_lines(viscoroll_solve, scenes_dir, file):
+    """setting="fast" and --setting fast: the same solver (6-point panels for one relaxation
+    time, the spectrum's own for a prony material) and options, in a sweep and at one speed."""
+    scene = vr.Scene.from_json(scenes_dir / file)
+    expected = run_cli(viscoroll_solve, scenes_dir / file, None, None, scene.speeds,
+                       ["--setting", "fast"])
+    default = run_cli(viscoroll_solve, scenes_dir / file, None, None, scene.speeds)
+    got = vr.sweep(scene, threads=1, setting="fast")
+    assert len(expected) == len(scene.speeds)
+    compare_sweep(expected, got, f"{file} fast")
+    # Not the default run (another discretisation of the integrals at least).
+    assert any(line["l"] != plain["l"] for line, plain in zip(expected, default))
+    (first,) = run_cli(viscoroll_solve, scenes_dir / file, None, None, scene.speeds[:1],
+                       ["--setting", "fast"])
+    one = vr.solve(scene, speed=float(scene.speeds[0]), setting="fast")
+    compare(first, one.as_dict(), f"{file} fast, one speed")
 
 
 def test_scene_from_json_reads_what_the_command_line_reads(scenes_dir):

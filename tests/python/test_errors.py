@@ -59,6 +59,12 @@ def test_constructors_name_the_parameter(make, name):
     (lambda: vr.sweep(scene(), speeds=[1.0], chunk=0), "chunk"),
     (lambda: vr.solve(scene(), speed=1.0, start=vr.solve(scene(), method="plane", speed=1.0)),
      "start"),
+    (lambda: vr.solve(scene(), speed=1.0, setting="quick"), "setting"),
+    (lambda: vr.solve(scene(), method="bem", speed=1.0, setting="fast"), "setting"),
+    (lambda: vr.sweep(scene(), speeds=[1.0], method="plane", setting="fast"), "setting"),
+    # A result of the fast setting does not seed the default one (another solver).
+    (lambda: vr.solve(scene(), speed=1.0,
+                      start=vr.solve(scene(), speed=1.1, setting="fast")), "start"),
 ])
 def test_solve_and_sweep_name_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):

@@ -495,7 +495,8 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
 // Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
 // viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
 // ones only), the residuals of the line solvers' default rule (12-point
-// Gauss-Legendre) are instantiated once in that library (src/) and not in the including
+// Gauss-Legendre), and in double of the fast setting's (6-point), are instantiated once in that
+// library (src/) and not in the including
 // translation unit; operator() and jacobian() are defined out of the class (not inline), so that
 // g++ does not instantiate them here for inlining either.
 #if defined(VISCOROLL_COMPILED)
@@ -504,6 +505,7 @@ extern template class LineResidual<long double, GaussLegendre<long double, 12>>;
 #endif
 #if defined(VISCOROLL_COMPILED) || defined(VISCOROLL_COMPILED_DOUBLE)
 extern template class LineResidual<double, GaussLegendre<double, 12>>;
+extern template class LineResidual<double, GaussLegendre<double, 6>>;
 #endif
 
 }  // namespace viscoroll

@@ -1228,6 +1228,7 @@ extern template class LineSolver<long double, StandardLinearSolid<long double>>;
 #endif
 #if defined(VISCOROLL_COMPILED) || defined(VISCOROLL_COMPILED_DOUBLE)
 extern template class LineSolver<double, StandardLinearSolid<double>>;
+extern template class LineSolver<double, StandardLinearSolid<double>, GaussLegendre<double, 6>>;
 // A Prony series over double: its entry points only (the class's private steps are those of a
 // single relaxation time): the paper's ellipsoid and the roller profiles (through ProfileView).
 extern template LineSolver<double, PronyRelaxation<double>>::Solution

@@ -1,0 +1,106 @@
+// viscoroll-solve --setting fast: the line method's fast setting, LineOptions::fast() on 6-point
+// panels (FastLineSolverD), the same numbers as the library's sweep with that solver; --grid and
+// the other line options override it; other methods and other values exit 2 naming the option.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/sweep.hpp>
+
+#include "cli_run.hpp"
+
+// The file's contents live in a namespace of their own: the tests are compiled in unity batches.
+namespace test_cli_setting {
+
+namespace {
+
+using namespace viscoroll::cli_test;
+
+std::string digits17(double x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+}  // namespace
+
+TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels", "[cli][line]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // The paper's scene (f = 9, nu = 0.5, tau = 1, C1 = 1, C2/C1 = (ln 20 - 1)/25, the load of a
+  // static a0 = 1) at three speeds of the figures' range, one chunk of continuation.
+  const viscoroll::StandardLinearSolid<double> rubber(1, 0.5, 9, 1);
+  const double load = 5.0 / (3 * 10 * rubber.instantaneous_compliance());
+  const double c2 = (std::log(20.0) - 1) / 25;
+  const std::vector<double> speeds = {0.01, 1.0, 100.0};
+  const std::vector<std::string> scene = {
+      "--method", "line", "--mu-d", "1",   "--nu",   "0.5",         "--f",     "9",
+      "--tau",    "1",    "--c1",   "1",   "--c2",   digits17(c2),  "--load",  digits17(load),
+      "--speed",  "0.01,1,100"};
+  std::vector<std::string> args = scene;
+  for (const char* extra : {"--setting", "fast"}) args.push_back(extra);
+  const Run r = run(args);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.status == 0);
+  const auto lines = json_lines(r.out);
+  REQUIRE(lines.size() == speeds.size());
+
+  const viscoroll::FastLineSolverD solver(rubber, viscoroll::LineOptions::fast());
+  viscoroll::SweepOptions one_thread;
+  one_thread.threads = 1;
+  const auto expected = viscoroll::sweep(
+      solver, viscoroll::LineScene<double>{.c1 = 1, .c2 = c2, .load = load, .speed = 0}, speeds,
+      one_thread);
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    CAPTURE(i);
+    CHECK(lines[i]["terms"] == viscoroll::LineOptions::fast().terms);
+    CHECK(lines[i]["converged"] == true);
+    CHECK(lines[i]["iterations"] == expected[i].iterations);
+    CHECK(same_bits(lines[i]["a0"].get<double>(), expected[i].a(0.0)));
+    CHECK(same_bits(lines[i]["b0"].get<double>(), expected[i].b(0.0)));
+    CHECK(same_bits(lines[i]["l"].get<double>(), expected[i].l()));
+    CHECK(same_bits(lines[i]["d"].get<double>(), expected[i].d));
+    CHECK(same_bits(lines[i]["chi"].get<double>(), expected[i].chi));
+  }
+
+  // --grid overrides the setting's terms; --setting default is the default run.
+  std::vector<std::string> four = args;
+  for (const char* extra : {"--grid", "4"}) four.push_back(extra);
+  const auto four_lines = json_lines(run(four).out);
+  REQUIRE(four_lines.size() == speeds.size());
+  CHECK(four_lines[0]["terms"] == 4);
+  std::vector<std::string> named_default = scene;
+  for (const char* extra : {"--setting", "default"}) named_default.push_back(extra);
+  const Run d = run(named_default), plain = run(scene);
+  CHECK(d.status == plain.status);
+  const auto d_lines = json_lines(d.out), plain_lines = json_lines(plain.out);
+  REQUIRE(d_lines.size() == speeds.size());
+  REQUIRE(plain_lines.size() == speeds.size());
+  CHECK(plain_lines[0]["terms"] == 6);
+  for (std::size_t i = 0; i < speeds.size(); ++i)
+    for (const auto& [key, value] : plain_lines[i].items())
+      if (key != "seconds") {
+        CAPTURE(i, key);
+        CHECK(d_lines[i][key] == value);
+      }
+
+  // Another value, or another method: exit 2 naming the option, nothing on stdout.
+  std::vector<std::string> bad = scene;
+  for (const char* extra : {"--setting", "quick"}) bad.push_back(extra);
+  const Run e = run(bad);
+  CHECK(e.status == 2);
+  CHECK(e.out.empty());
+  CHECK(e.err.find("--setting expects default or fast") != std::string::npos);
+  const Run plane = run({"--method", "plane", "--mu-d", "1", "--nu", "0.5", "--f", "9", "--tau",
+                         "1", "--speed", "1", "--c1", "1", "--load", "1", "--setting", "fast"});
+  CHECK(plane.status == 2);
+  CHECK(plane.out.empty());
+  CHECK(plane.err.find("--setting is valid only with --method line") != std::string::npos);
+}
+
+}  // namespace test_cli_setting
