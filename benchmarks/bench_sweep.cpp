@@ -6,8 +6,8 @@
 //   that did not converge (their time counts).
 //   BM_sweep_line_fast/chunk/threads: the same with LineOptions::fast() (docs/performance.md, "The
 //   fast setting");
-//   BM_sweep_line_fast_6/chunk/threads: the same on 6-point panels (FastLineSolverD); chunk 1 is
-//   a cold solve at every speed.
+//   BM_sweep_line_fast_6/chunk/threads: the same on 6-point panels (FastLineSolverD); chunk 16 is
+//   the library's default (SweepOptions), chunk 1 a cold solve at every speed.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -80,6 +80,7 @@ BENCHMARK(BM_sweep_line_fast)
 BENCHMARK(BM_sweep_line_fast_6)
     ->Args({100, 1})
     ->Args({50, 2})
+    ->Args({16, 2})
     ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
