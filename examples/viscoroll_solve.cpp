@@ -459,10 +459,11 @@ struct Problem {
 };
 
 /// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
-/// defaults where not given), over LineOptions::fast() with --setting fast.
-viscoroll::LineOptions line_options(const SolveOptions& o) {
+/// defaults where not given), over LineOptions::fast() where `setting` (--setting, else the scene
+/// file's) is "fast".
+viscoroll::LineOptions line_options(const SolveOptions& o, const std::string& setting) {
   viscoroll::LineOptions line =
-      o.setting == "fast" ? viscoroll::LineOptions::fast() : viscoroll::LineOptions{};
+      setting == "fast" ? viscoroll::LineOptions::fast() : viscoroll::LineOptions{};
   if (o.oversampling) line.oversampling = static_cast<int>(*o.oversampling);
   if (o.max_iterations) line.max_iterations = static_cast<int>(*o.max_iterations);
   if (o.quadrature_tolerance) line.quadrature_tolerance = *o.quadrature_tolerance;
@@ -473,7 +474,8 @@ viscoroll::LineOptions line_options(const SolveOptions& o) {
 
 Problem from_options(const SolveOptions& o) {
   Problem p{*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
-            o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o), {}};
+            o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o, o.setting),
+            {}};
   p.fast = o.setting == "fast";
   return p;
 }
@@ -558,8 +560,10 @@ Problem from_scene(const SolveOptions& o) {
   p.method = *method;
   p.grid = o.grid ? o.grid : scene.grid;
   p.threads = o.threads;
-  p.line = line_options(o);
-  p.fast = o.setting == "fast";
+  // --setting replaces the file's "setting".
+  const std::string setting = o.setting.empty() ? scene.setting : o.setting;
+  p.line = line_options(o, setting);
+  p.fast = setting == "fast";
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
   std::visit(

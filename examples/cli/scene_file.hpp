@@ -117,6 +117,9 @@ struct Scene {
   std::vector<double> speeds;
   std::optional<Method> method;
   std::optional<long> grid;
+  /// "setting": "default" or "fast" (empty: not given), the line method's setting
+  /// (viscoroll-solve --setting, which replaces it); the plane and bem methods ignore it.
+  std::string setting;
   /// The top level's "temperature" (degrees Celsius): a prony material with a shift only.
   std::vector<double> temperatures;
 };
@@ -597,7 +600,8 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   }
   const ObjectReader top(
       source, root, "",
-      {"description", "material", "roller", "load", "speeds", "method", "grid", "temperature"},
+      {"description", "material", "roller", "load", "speeds", "method", "grid", "setting",
+       "temperature"},
       "the scene");
   Scene scene;
   if (top.has("description")) scene.description = top.string("description");
@@ -633,6 +637,11 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
       top.fail("grid = " + grid.dump() + " is outside the valid range " +
                scene_detail::range_of("grid"));
     scene.grid = grid.get<long>();
+  }
+  if (top.has("setting")) {
+    scene.setting = top.string("setting");
+    if (scene.setting != "default" && scene.setting != "fast")
+      top.fail("setting = \"" + scene.setting + "\" is not one of default, fast");
   }
   if (top.has("temperature")) {
     const auto* prony = std::get_if<PronyModel>(&scene.material);

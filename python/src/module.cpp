@@ -357,6 +357,7 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
   out.speeds = in.speeds;
   if (in.method) out.method = parse_method(std::string(cli::method_name(*in.method)));
   out.grid = in.grid;
+  out.setting = in.setting;
   out.description = in.description;
   out.source = source;
   return out;
@@ -387,9 +388,11 @@ py::array_t<double> as_array(const std::vector<double>& values) {
 }
 
 /// The line method's setting: None or "default", or "fast" (LineOptions::fast(); the line method
-/// only).
-bool fast_setting(const std::optional<std::string>& setting, Method method) {
-  if (!setting || *setting == "default") return false;
+/// only). None with the line method: the scene file's "setting" (the other methods ignore it).
+bool fast_setting(const SceneSpec& scene, const std::optional<std::string>& setting,
+                  Method method) {
+  if (!setting) return method == Method::line && scene.setting == "fast";
+  if (*setting == "default") return false;
   if (*setting != "fast")
     throw std::invalid_argument("viscoroll: setting = '" + *setting +
                                 "' is not a setting: expected None, 'default' or 'fast'");
@@ -611,7 +614,8 @@ setting : {"default", "fast"}, optional
     grid is given, integrals to 1e-4, loose intermediate stages) on 6-point panels: within 1%
     of the converged solution in a(0), b(0), l, d and chi on the paper's scene at
     V tau/a0 = 1e-3 ... 1e3, about 1 ms a solve (docs/performance.md, "The fast setting").
-    A Prony material keeps its 4 terms and 12-point panels. Default (None): "default".
+    A Prony material keeps its 4 terms and 12-point panels. Default (None): the scene file's
+    "setting" with the line method, else "default".
 
 Returns
 -------
@@ -888,8 +892,8 @@ PYBIND11_MODULE(_viscoroll, m) {
           py::arg("path"), py::arg("temperature") = py::none(),
           "Scene.from_json(path, temperature=None) -> Scene\n\n"
           "Read a scene file (JSON, SI units; docs/cli.md) with the command line's reader.\n"
-          "Its method and grid become the defaults of solve() and sweep(). A prony material\n"
-          "(its terms, or the fit of its DMA file: a poor fit is a warning) is solved at\n"
+          "Its method, grid and setting become the defaults of solve() and sweep(). A prony\n"
+          "material (its terms, or the fit of its DMA file: a poor fit is a warning) is solved at\n"
           "`temperature` (degrees Celsius), else at the file's one temperature, else at its shift\n"
           "law's t_ref. Raises ValueError naming the file and the key with its path, e.g.\n"
           "'paper.json: material.f = -1 is outside the valid range f >= 0 (finite)'.")
@@ -923,6 +927,13 @@ PYBIND11_MODULE(_viscoroll, m) {
             return py::int_(*s.grid);
           },
           "The scene file's grid, or None.")
+      .def_property_readonly(
+          "setting",
+          [](const SceneSpec& s) -> py::object {
+            if (s.setting.empty()) return py::none();
+            return py::str(s.setting);
+          },
+          "The scene file's setting (\"default\" or \"fast\", the line method's), or None.")
       .def_readonly("description", &SceneSpec::description, "The scene file's description.")
       .def("__repr__", [](const SceneSpec& s) {
         std::string out = "Scene(material=" + material_repr(s.material) +
@@ -1028,7 +1039,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       [](const SceneSpec& scene, const std::optional<std::string>& method, std::optional<long> grid,
          std::optional<double> speed, const Result* start, const std::optional<std::string>& setting) {
         const Method which = method_for(scene, method);
-        const bool fast = fast_setting(setting, which);
+        const bool fast = fast_setting(scene, setting, which);
         double v = 0;
         if (speed) {
           v = *speed;
@@ -1058,7 +1069,7 @@ PYBIND11_MODULE(_viscoroll, m) {
          std::optional<long> threads, long chunk, bool with_results,
          const std::optional<std::string>& setting) {
         const Method which = method_for(scene, method);
-        const bool fast = fast_setting(setting, which);
+        const bool fast = fast_setting(scene, setting, which);
         std::vector<double> v =
             speeds && !speeds->is_none() ? as_vector(*speeds, "speeds") : scene.speeds;
         if (v.empty())

@@ -1,9 +1,11 @@
 // viscoroll-solve --setting fast: the line method's fast setting, LineOptions::fast() on 6-point
 // panels (FastLineSolverD), the same numbers as the library's sweep with that solver; --grid and
-// the other line options override it; other methods and other values exit 2 naming the option.
+// the other line options override it; other methods and other values exit 2 naming the option. A
+// scene file's "setting" is the same, and --setting replaces it.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -101,6 +103,45 @@ TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels",
   CHECK(plane.status == 2);
   CHECK(plane.out.empty());
   CHECK(plane.err.find("--setting is valid only with --method line") != std::string::npos);
+}
+
+TEST_CASE("cli: a scene file's setting is the line method's, --setting replaces it", "[cli][line]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // paper.json with "setting": "fast": the same lines as paper.json with --setting fast (the
+  // file's grid 6 kept); --setting default over it: paper.json's own lines; the bem method
+  // ignores it.
+  nlohmann::ordered_json scene = nlohmann::ordered_json::parse(slurp(scenes_dir() / "paper.json"));
+  scene["setting"] = "fast";
+  const TempDir dir("viscoroll_cli_setting");
+  const std::string fast_file = (dir.path() / "paper_fast.json").string();
+  std::ofstream(fast_file) << scene.dump();
+  const std::string paper = (scenes_dir() / "paper.json").string();
+  const auto same_lines = [](const std::string& x, const std::string& y) {
+    const auto a = json_lines(x), b = json_lines(y);
+    REQUIRE(a.size() == b.size());
+    REQUIRE_FALSE(a.empty());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (const auto& [key, value] : b[i].items())
+        if (key != "seconds") {
+          CAPTURE(i, key);
+          CHECK(a[i][key] == value);
+        }
+  };
+  const Run from_file = run({"--scene", fast_file, "--speed", "0.1,1"});
+  const Run from_option = run({"--scene", paper, "--speed", "0.1,1", "--setting", "fast"});
+  INFO("stderr: " << from_file.err);
+  REQUIRE(from_file.status == 0);
+  REQUIRE(from_option.status == 0);
+  same_lines(from_file.out, from_option.out);
+  CHECK(json_lines(from_file.out)[0]["terms"] == 6);
+  const Run replaced = run({"--scene", fast_file, "--speed", "0.1,1", "--setting", "default"});
+  const Run plain = run({"--scene", paper, "--speed", "0.1,1"});
+  REQUIRE(replaced.status == 0);
+  same_lines(replaced.out, plain.out);
+  CHECK(json_lines(plain.out)[0]["l"] != json_lines(from_file.out)[0]["l"]);
+  const Run bem = run({"--scene", fast_file, "--speed", "1", "--method", "bem", "--grid", "6"});
+  CHECK(bem.status == 0);
+  CHECK(json_lines(bem.out).size() == 1);
 }
 
 }  // namespace test_cli_setting

@@ -40,7 +40,8 @@ std::string scene_with(const std::string& material, const std::string& roller,
 TEST_CASE("cli scene file: a valid scene gives its values", "[cli][scene]") {
   const Scene s = parse_scene(
       "{\"description\": \"d\", " + sls + ", " + ellipsoid +
-          R"(, "load": 100.0, "speeds": [0.001, 0.01, 0.1, 1.0], "method": "line", "grid": 6})",
+          R"(, "load": 100.0, "speeds": [0.001, 0.01, 0.1, 1.0], "method": "line", "grid": 6,)"
+          R"( "setting": "fast"})",
       "s.json");
   CHECK(s.description == "d");
   const auto& m = std::get<StandardLinearSolidModel>(s.material);
@@ -57,6 +58,7 @@ TEST_CASE("cli scene file: a valid scene gives its values", "[cli][scene]") {
   CHECK(*s.method == Method::line);
   REQUIRE(s.grid);
   CHECK(*s.grid == 6);
+  CHECK(s.setting == "fast");
 }
 
 TEST_CASE("cli scene file: elastic material, cylinder, optional keys absent", "[cli][scene]") {
@@ -72,6 +74,7 @@ TEST_CASE("cli scene file: elastic material, cylinder, optional keys absent", "[
   CHECK(s.speeds == std::vector<double>{0});
   CHECK(!s.method);
   CHECK(!s.grid);
+  CHECK(s.setting.empty());
   CHECK_NOTHROW(check_scene_for_method(s, Method::plane, "s.json"));
   CHECK_THROWS_WITH(check_scene_for_method(s, Method::line, "s.json"),
                     Catch::Contains("roller.profile = \"cylinder\" suits the plane method only"));
@@ -121,6 +124,9 @@ TEST_CASE("cli scene file: each error names its key with its path and the range"
       {scene_with(sls, ellipsoid, rest + R"(, "grid": 2.5)"),
        "grid must be an integer, got number"},
       {scene_with(sls, ellipsoid, rest + R"(, "grid": 0)"), "grid = 0 is outside the valid range"},
+      {scene_with(sls, ellipsoid, rest + R"(, "setting": "quick")"),
+       "setting = \"quick\" is not one of default, fast"},
+      {scene_with(sls, ellipsoid, rest + R"(, "setting": 1)"), "setting must be a string"},
       {scene_with(sls, ellipsoid, rest + R"(, "load": 2)"), "duplicate key load"},
       {scene_with(
            R"("material": {"model": "standard_linear_solid", "mu_d": 1, "nu": 0.5, "f": 9, "tau": 1, "f": 2})",

@@ -122,6 +122,33 @@ def test_the_fast_setting_matches_the_command_lines(viscoroll_solve, scenes_dir,
     compare(first, one.as_dict(), f"{file} fast, one speed")
 
 
+def test_a_scene_files_setting_is_the_default_of_solve_and_sweep(scenes_dir, tmp_path):
+    """"setting": "fast" in the file: sweep() and solve() as with setting="fast"; setting="default"
+    replaces it; the bem method ignores it."""
+    document = json.loads((scenes_dir / "paper.json").read_text())
+    document["setting"] = "fast"
+    path = tmp_path / "paper_fast.json"
+    path.write_text(json.dumps(document))
+    fast_file = vr.Scene.from_json(path)
+    paper = vr.Scene.from_json(scenes_dir / "paper.json")
+    assert fast_file.setting == "fast" and paper.setting is None
+    speeds = paper.speeds[:3]
+
+    def same(x, y):
+        assert x.keys() == y.keys()
+        for key in x:
+            if key != "seconds":
+                assert list(x[key]) == list(y[key]), key
+
+    same(vr.sweep(fast_file, speeds=speeds, threads=1),
+         vr.sweep(paper, speeds=speeds, threads=1, setting="fast"))
+    same(vr.sweep(fast_file, speeds=speeds, threads=1, setting="default"),
+         vr.sweep(paper, speeds=speeds, threads=1))
+    assert vr.solve(fast_file, speed=float(speeds[1])).l == \
+        vr.solve(paper, speed=float(speeds[1]), setting="fast").l
+    assert vr.solve(fast_file, method="bem", grid=6, speed=float(speeds[1])).converged
+
+
 def test_scene_from_json_reads_what_the_command_line_reads(scenes_dir):
     scene = vr.Scene.from_json(scenes_dir / "paper.json")
     assert scene.method == "line" and scene.grid == 6 and scene.load == 20.0
