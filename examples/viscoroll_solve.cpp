@@ -459,11 +459,12 @@ struct Problem {
 };
 
 /// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
-/// defaults where not given), over LineOptions::fast() where `setting` (--setting, else the scene
-/// file's) is "fast".
-viscoroll::LineOptions line_options(const SolveOptions& o, const std::string& setting) {
-  viscoroll::LineOptions line =
-      setting == "fast" ? viscoroll::LineOptions::fast() : viscoroll::LineOptions{};
+/// defaults where not given), over LineOptions::fast() in the fast `setting` (--setting, else the
+/// scene file's).
+viscoroll::LineOptions line_options(const SolveOptions& o, viscoroll::cli::LineSetting setting) {
+  viscoroll::LineOptions line = setting == viscoroll::cli::LineSetting::fast
+                                    ? viscoroll::LineOptions::fast()
+                                    : viscoroll::LineOptions{};
   if (o.oversampling) line.oversampling = static_cast<int>(*o.oversampling);
   if (o.max_iterations) line.max_iterations = static_cast<int>(*o.max_iterations);
   if (o.quadrature_tolerance) line.quadrature_tolerance = *o.quadrature_tolerance;
@@ -473,10 +474,11 @@ viscoroll::LineOptions line_options(const SolveOptions& o, const std::string& se
 }
 
 Problem from_options(const SolveOptions& o) {
+  const auto setting = o.setting.value_or(viscoroll::cli::LineSetting::standard);
   Problem p{*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
-            o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o, o.setting),
+            o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o, setting),
             {}};
-  p.fast = o.setting == "fast";
+  p.fast = setting == viscoroll::cli::LineSetting::fast;
   return p;
 }
 
@@ -561,9 +563,10 @@ Problem from_scene(const SolveOptions& o) {
   p.grid = o.grid ? o.grid : scene.grid;
   p.threads = o.threads;
   // --setting replaces the file's "setting".
-  const std::string setting = o.setting.empty() ? scene.setting : o.setting;
+  const auto setting =
+      o.setting.value_or(scene.setting.value_or(viscoroll::cli::LineSetting::standard));
   p.line = line_options(o, setting);
-  p.fast = setting == "fast";
+  p.fast = setting == viscoroll::cli::LineSetting::fast;
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
   std::visit(
@@ -1009,7 +1012,7 @@ int main(int argc, char** argv) {
                                        std::pair{bool(options.max_iterations), "--max-iterations"},
                                        std::pair{bool(options.quadrature_tolerance),
                                                  "--quadrature-tolerance"},
-                                       std::pair{!options.setting.empty(), "--setting"}})
+                                       std::pair{options.setting.has_value(), "--setting"}})
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");

@@ -117,9 +117,9 @@ struct Scene {
   std::vector<double> speeds;
   std::optional<Method> method;
   std::optional<long> grid;
-  /// "setting": "default" or "fast" (empty: not given), the line method's setting
+  /// "setting": "default" or "fast" (none: not given), the line method's setting
   /// (viscoroll-solve --setting, which replaces it); the plane and bem methods ignore it.
-  std::string setting;
+  std::optional<LineSetting> setting;
   /// The top level's "temperature" (degrees Celsius): a prony material with a shift only.
   std::vector<double> temperatures;
 };
@@ -639,9 +639,9 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
     scene.grid = grid.get<long>();
   }
   if (top.has("setting")) {
-    scene.setting = top.string("setting");
-    if (scene.setting != "default" && scene.setting != "fast")
-      top.fail("setting = \"" + scene.setting + "\" is not one of default, fast");
+    const std::string setting = top.string("setting");
+    scene.setting = parse_line_setting(setting);
+    if (!scene.setting) top.fail("setting = \"" + setting + "\" is not one of default, fast");
   }
   if (top.has("temperature")) {
     const auto* prony = std::get_if<PronyModel>(&scene.material);

@@ -17,6 +17,22 @@ namespace viscoroll::cli {
 
 enum class Method { plane, line, bem };
 
+/// The line method's setting (--setting, a scene file's "setting", Python's setting=): the
+/// defaults, or LineOptions::fast() on 6-point panels (FastLineSolverD) for a material of one
+/// relaxation time.
+enum class LineSetting { standard, fast };
+
+/// The setting named `text` ("default" or "fast"), or nothing.
+inline std::optional<LineSetting> parse_line_setting(std::string_view text) {
+  if (text == "default") return LineSetting::standard;
+  if (text == "fast") return LineSetting::fast;
+  return std::nullopt;
+}
+
+inline const char* line_setting_name(LineSetting s) {
+  return s == LineSetting::fast ? "fast" : "default";
+}
+
 /// How results go to stdout: one JSON object per line, or an aligned table.
 enum class Format { json, table };
 
@@ -66,11 +82,11 @@ struct SolveOptions {
   /// --quadrature-tolerance TOL (0 <= TOL <= 1e-4; 0: every integral to rounding): the line
   /// method's LineOptions::quadrature_tolerance.
   std::optional<double> quadrature_tolerance;
-  /// --setting default|fast (empty: not given, the default): the line method's fast setting,
+  /// --setting default|fast (none: not given): the line method's setting; with fast,
   /// LineOptions::fast() (5 terms unless --grid, integrals to 1e-4, loose intermediate stages)
   /// on 6-point panels (FastLineSolverD) for a material of one relaxation time; the other line
   /// options given override it.
-  std::string setting;
+  std::optional<LineSetting> setting;
 };
 
 inline std::string usage() {
@@ -223,10 +239,10 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
                                   o.basis + "'");
   }
   if (given.count("--setting")) {
-    o.setting = std::string(given["--setting"]);
-    if (o.setting != "default" && o.setting != "fast")
+    o.setting = parse_line_setting(given["--setting"]);
+    if (!o.setting)
       throw std::invalid_argument("viscoroll-solve: --setting expects default or fast, got '" +
-                                  o.setting + "'");
+                                  std::string(given["--setting"]) + "'");
   }
   if (given.count("--threads")) {
     const std::string_view text = given["--threads"];

@@ -62,9 +62,9 @@ struct SceneSpec {
   std::vector<double> speeds;
   std::optional<Method> method;
   std::optional<long> grid;
-  /// A scene file's "setting" ("default" or "fast"; empty: none): the line method's default
-  /// setting in solve() and sweep().
-  std::string setting;
+  /// A scene file's "setting" (none where it has none): the line method's default setting in
+  /// solve() and sweep().
+  std::optional<cli::LineSetting> setting;
   std::string description;
   std::string source = "Scene";  ///< starts the messages of method-dependent checks
   /// A Prony material's temperature (degrees Celsius): its shift law's t_ref by default; NaN

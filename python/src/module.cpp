@@ -391,11 +391,12 @@ py::array_t<double> as_array(const std::vector<double>& values) {
 /// only). None with the line method: the scene file's "setting" (the other methods ignore it).
 bool fast_setting(const SceneSpec& scene, const std::optional<std::string>& setting,
                   Method method) {
-  if (!setting) return method == Method::line && scene.setting == "fast";
-  if (*setting == "default") return false;
-  if (*setting != "fast")
+  if (!setting) return method == Method::line && scene.setting == cli::LineSetting::fast;
+  const auto named = cli::parse_line_setting(*setting);
+  if (!named)
     throw std::invalid_argument("viscoroll: setting = '" + *setting +
                                 "' is not a setting: expected None, 'default' or 'fast'");
+  if (*named == cli::LineSetting::standard) return false;
   if (method != Method::line)
     throw std::invalid_argument(std::string("viscoroll: setting = 'fast' is valid only with the "
                                             "line method, got method '") +
@@ -930,8 +931,8 @@ PYBIND11_MODULE(_viscoroll, m) {
       .def_property_readonly(
           "setting",
           [](const SceneSpec& s) -> py::object {
-            if (s.setting.empty()) return py::none();
-            return py::str(s.setting);
+            if (!s.setting) return py::none();
+            return py::str(viscoroll::cli::line_setting_name(*s.setting));
           },
           "The scene file's setting (\"default\" or \"fast\", the line method's), or None.")
       .def_readonly("description", &SceneSpec::description, "The scene file's description.")
@@ -1037,7 +1038,8 @@ PYBIND11_MODULE(_viscoroll, m) {
   m.def(
       "solve",
       [](const SceneSpec& scene, const std::optional<std::string>& method, std::optional<long> grid,
-         std::optional<double> speed, const Result* start, const std::optional<std::string>& setting) {
+         std::optional<double> speed, const Result* start,
+         const std::optional<std::string>& setting) {
         const Method which = method_for(scene, method);
         const bool fast = fast_setting(scene, setting, which);
         double v = 0;

@@ -58,7 +58,7 @@ TEST_CASE("cli scene file: a valid scene gives its values", "[cli][scene]") {
   CHECK(*s.method == Method::line);
   REQUIRE(s.grid);
   CHECK(*s.grid == 6);
-  CHECK(s.setting == "fast");
+  CHECK(s.setting == LineSetting::fast);
 }
 
 TEST_CASE("cli scene file: elastic material, cylinder, optional keys absent", "[cli][scene]") {
@@ -74,7 +74,7 @@ TEST_CASE("cli scene file: elastic material, cylinder, optional keys absent", "[
   CHECK(s.speeds == std::vector<double>{0});
   CHECK(!s.method);
   CHECK(!s.grid);
-  CHECK(s.setting.empty());
+  CHECK(!s.setting);
   CHECK_NOTHROW(check_scene_for_method(s, Method::plane, "s.json"));
   CHECK_THROWS_WITH(check_scene_for_method(s, Method::line, "s.json"),
                     Catch::Contains("roller.profile = \"cylinder\" suits the plane method only"));
