@@ -3,8 +3,6 @@
 // the other line options override it; other methods and other values exit 2 naming the option. A
 // scene file's "setting" is the same, and --setting replaces it.
 #include <catch2/catch.hpp>
-#include <cmath>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -13,6 +11,8 @@
 #include <viscoroll/sweep.hpp>
 
 #include "cli_run.hpp"
+#include "support/paper_scene.hpp"
+#include "support/same_line_solution.hpp"
 
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_cli_setting {
@@ -20,6 +20,7 @@ namespace test_cli_setting {
 namespace {
 
 using namespace viscoroll::cli_test;
+using viscoroll::testing::same_bits;
 
 std::string digits17(double x) {
   std::ostringstream out;
@@ -28,21 +29,18 @@ std::string digits17(double x) {
   return out.str();
 }
 
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
-
 }  // namespace
 
 TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels", "[cli][line]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
-  // The paper's scene (f = 9, nu = 0.5, tau = 1, C1 = 1, C2/C1 = (ln 20 - 1)/25, the load of a
-  // static a0 = 1) at three speeds of the figures' range, one chunk of continuation.
-  const viscoroll::StandardLinearSolid<double> rubber(1, 0.5, 9, 1);
-  const double load = 5.0 / (3 * 10 * rubber.instantaneous_compliance());
-  const double c2 = (std::log(20.0) - 1) / 25;
+  // The paper's scene (tests/support/paper_scene.hpp: mu_D = 1, nu = 0.5, f = 9, tau = 1) at
+  // three speeds of the figures' range, one chunk of continuation.
+  const viscoroll::testing::PaperScene paper;
+  const auto at = paper.scene(0.0);
   const std::vector<double> speeds = {0.01, 1.0, 100.0};
   const std::vector<std::string> scene = {
-      "--method", "line", "--mu-d", "1",   "--nu",   "0.5",         "--f",     "9",
-      "--tau",    "1",    "--c1",   "1",   "--c2",   digits17(c2),  "--load",  digits17(load),
+      "--method", "line", "--mu-d", "1",   "--nu",   "0.5",           "--f",     "9",
+      "--tau",    "1",    "--c1",   "1",   "--c2",   digits17(at.c2), "--load",  digits17(at.load),
       "--speed",  "0.01,1,100"};
   std::vector<std::string> args = scene;
   for (const char* extra : {"--setting", "fast"}) args.push_back(extra);
@@ -52,12 +50,10 @@ TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels",
   const auto lines = json_lines(r.out);
   REQUIRE(lines.size() == speeds.size());
 
-  const viscoroll::FastLineSolverD solver(rubber, viscoroll::LineOptions::fast());
+  const viscoroll::FastLineSolverD solver(paper.material, viscoroll::LineOptions::fast());
   viscoroll::SweepOptions one_thread;
   one_thread.threads = 1;
-  const auto expected = viscoroll::sweep(
-      solver, viscoroll::LineScene<double>{.c1 = 1, .c2 = c2, .load = load, .speed = 0}, speeds,
-      one_thread);
+  const auto expected = viscoroll::sweep(solver, at, speeds, one_thread);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     CAPTURE(i);
     CHECK(lines[i]["terms"] == viscoroll::LineOptions::fast().terms);
