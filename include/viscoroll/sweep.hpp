@@ -5,9 +5,10 @@
 // The speeds are cut into chunks of fixed length (SweepOptions::chunk) in the order given. Within
 // a chunk the speeds are solved in order and each solve is seeded with the previous converged,
 // iterated solution of the same chunk where that is a root (continuation, as the command line
-// does; a least-squares minimum seeds nothing); the first speed of a chunk starts cold. The chunks share nothing, so they run on any number of threads, and the
-// results, returned in the order of the speeds, are the same bit for bit whatever the thread
-// count: the thread count decides only who solves a chunk, never how.
+// does; a least-squares minimum seeds nothing); the first speed of a chunk starts cold. The
+// chunks share nothing, so they run on any number of threads, and the results, returned in the
+// order of the speeds, are the same bit for bit whatever the thread count: the thread count
+// decides only who solves a chunk, never how.
 #pragma once
 
 #include <algorithm>
