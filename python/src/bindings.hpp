@@ -151,8 +151,6 @@ using SolvedPtr = std::shared_ptr<const Solved>;
 /// (1..64, default 6; 4 for a Prony material, as the command line), bem elements per semi-axis
 /// (2..512, default 16); throws std::invalid_argument naming `grid`.
 int discretisation(Method method, std::optional<long> grid, bool prony, bool fast = false);
-/// LineOptions::fast().terms (solve_line.cpp, which includes the line solver).
-int fast_line_terms();
 
 /// Seconds since `start`.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {

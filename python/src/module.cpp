@@ -19,6 +19,7 @@
 #include <vector>
 #include <filesystem>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/line_options.hpp>
 #include <viscoroll/material/dma_fit.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
@@ -38,7 +39,7 @@ namespace viscoroll::python {
 
 int discretisation(Method method, std::optional<long> grid, bool prony, bool fast) {
   if (method == Method::line) {
-    const long n = grid.value_or(prony ? 4 : fast ? fast_line_terms() : 6);
+    const long n = grid.value_or(prony ? 4 : fast ? LineOptions::fast().terms : 6);
     if (n < 1 || n > 64)
       throw std::invalid_argument(
           "viscoroll: grid = " + std::to_string(n) +

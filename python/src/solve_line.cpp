@@ -112,8 +112,6 @@ auto with_profile(const SceneSpec& scene, F f) {
 
 }  // namespace
 
-int fast_line_terms() { return LineOptions::fast().terms; }
-
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
                      const Solved* start) {
   const auto keys = MaterialKeys::of(scene);

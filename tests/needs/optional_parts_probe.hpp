@@ -1,5 +1,6 @@
 // Probes for the optional parts of viscoroll, shared by the [needs] tests: whether the BEM's
-// classes are declared and whether Eigen's FFT module and boost::multiprecision were included,
+// classes are declared and whether Eigen's FFT module, boost::multiprecision, Eigen itself and
+// Boost's Bessel functions were included,
 // in the translation unit that includes this header after the headers under test.
 //
 // The BEM probe: a fallback class of the same name is made visible in viscoroll and
@@ -51,6 +52,18 @@ constexpr bool eigen_fft_included = false;
 constexpr bool multiprecision_included = true;
 #else
 constexpr bool multiprecision_included = false;
+#endif
+/// Include guards of <Eigen/Core> and of Boost's Bessel functions (which line_shape.hpp needs
+/// through special/bessel_ratio.hpp): what the line solver's configuration headers leave out.
+#ifdef EIGEN_CORE_H
+constexpr bool eigen_core_included = true;
+#else
+constexpr bool eigen_core_included = false;
+#endif
+#ifdef BOOST_MATH_BESSEL_HPP
+constexpr bool boost_bessel_included = true;
+#else
+constexpr bool boost_bessel_included = false;
 #endif
 
 }  // namespace viscoroll_needs

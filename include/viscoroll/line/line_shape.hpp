@@ -19,19 +19,10 @@
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
+#include <viscoroll/line/line_basis.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
 namespace viscoroll {
-
-/// The variable in which a(y) and b(y) are expanded (w = 1 - t^2, s = sqrt(w)).
-enum class LineBasis {
-  t_squared,  ///< v = 1 - 2 w = 2 t^2 - 1
-  s,          ///< v = 2 s - 1 (resolves odd powers of a ~ sqrt(1 - t^2) at the ends)
-  /// v = 2 asinh(s/e)/asinh(1/e) - 1 with e = LineShape::scale = V tau/((1 + f) a_ref): resolves
-  /// the layer at the ends of the slow regime, where G has poles at s = +-i j_{0,k} e a_ref/a_end
-  /// (docs/theory.md section 10); tends to `s` as e grows.
-  s_mapped,
-};
 
 /// a(y), b(y) of the contact and the functions of y that follow from them.
 template <RealScalar Real>

@@ -3,18 +3,22 @@
 //
 // Panek & Kalker (1980), Sections 5-7: the equations (33), (34), (36), (46), (47) and the
 // leading-edge condition in the form (L6) (line_residual.hpp; docs/theory.md section 4 for (L6)
-// and why the printed (44), opt-in in line/paper_leading_edge.hpp, is not used), solved for the coefficients of a(y), b(y)
-// (line_shape.hpp), l and d by a Levenberg-Marquardt iteration (numerics/levenberg_marquardt.hpp;
+// and why the printed (44), opt-in in line/paper_leading_edge.hpp, is not used), solved for the
+// coefficients of a(y), b(y) (line_shape.hpp), l and d by a Levenberg-Marquardt iteration
+// (numerics/levenberg_marquardt.hpp;
 // the system is square, so a converged solution has a zero residual to rounding), or, where the
 // equations have no root, as the certified least-squares minimum of the paper's Section 7
 // (numerics/least_squares_minimum.hpp). The static scene (V tau = 0), the elastic material
 // (f = 0) and the glassy limit (V tau beyond ~40/eps half widths, strip_is_glassy) are Kalker's
 // closed form (static_line_contact.hpp) with the long-term or the instantaneous compliance: no
 // Bessel work.
+//
+// The scene and the settings are line_scene.hpp and line_options.hpp; the iteration's steps that
+// the one-term and the spectrum path share, the solver's units and the rolling friction are in
+// line/detail/ (line_iteration.hpp, line_units.hpp, rolling_friction.hpp).
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/QR>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <chrono>
 #include <cmath>
@@ -32,8 +36,13 @@
 #include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/detail/line_iteration.hpp>
+#include <viscoroll/line/detail/line_units.hpp>
+#include <viscoroll/line/detail/rolling_friction.hpp>
+#include <viscoroll/line/line_options.hpp>
 #include <viscoroll/line/line_profile.hpp>
 #include <viscoroll/line/line_residual.hpp>
+#include <viscoroll/line/line_scene.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
 #include <viscoroll/line/line_spectrum.hpp>
@@ -49,107 +58,6 @@
 #include <boost/math/tools/roots.hpp>
 
 namespace viscoroll {
-
-/// An ellipsoidal (doubly parabolic, Eq. 27) roller of curvatures c1 (across) and c2 (along the
-/// axis) under total load `load`, rolling towards +x at `speed`.
-template <RealScalar Real>
-struct LineScene {
-  Real c1 = detail::required_field<Real>();
-  Real c2 = detail::required_field<Real>();
-  Real load = detail::required_field<Real>();
-  Real speed = detail::required_field<Real>();
-
-  /// Throws std::invalid_argument naming the parameter unless c1 > 0, 0 < c2 < 8 e^-3 c1 (the
-  /// contact is longer in y than in x), load > 0, speed >= 0, all finite.
-  void validate() const {
-    detail::require_positive("c1", c1);
-    detail::require_positive("c2", c2);
-    detail::require_positive("load", load);
-    detail::require_non_negative("speed", speed);
-    detail::require(c2 < max_line_contact_curvature_ratio<Real>() * c1, "c2", c2,
-                    "0 < c2 < 8 e^-3 c1 = 0.398 c1 (a contact longer in y than in x)");
-  }
-};
-
-/// How the line solver forms the Jacobian of its residual.
-enum class LineJacobian {
-  analytic,    ///< chain rule through the shape and the strip functions (LineResidual::jacobian)
-  difference,  ///< forward differences, 2 terms + 3 residual evaluations
-};
-
-/// Runtime settings of the line solver.
-struct LineOptions {
-  /// Discretisation: ln a(y) has `terms` Chebyshev coefficients, b(y) has terms + 1; the
-  /// equations are collocated at terms + 1 points.
-  int terms = 8;
-  /// Levenberg-Marquardt iterations allowed (each costs one residual evaluation per damping try,
-  /// plus one Jacobian when it is refreshed: ~2.5 residual evaluations semi-analytic, 2 terms + 3
-  /// by differences).
-  int max_iterations = 100;
-  /// Expansion variable of a(y), b(y); LineBasis::s_mapped with oversampling for the slow regime.
-  LineBasis basis = LineBasis::t_squared;
-  /// Collocation points per coefficient of b(y): the equations hold at oversampling (terms + 1)
-  /// points. 1: the square system, solved exactly where it has a root. k > 1: the least-squares
-  /// fit of the paper (Section 7), which converges with `terms` where the line equations have no
-  /// solution at all (the slow regime, V tau <~ 0.1 a0; docs/line-solver.md, "Oversampling").
-  int oversampling = 1;
-  /// How the Jacobian is formed: semi-analytic (LineResidual::jacobian, default) or by forward
-  /// differences.
-  LineJacobian jacobian = LineJacobian::analytic;
-  /// Where Levenberg-Marquardt stops at a least-squares minimum with no root of the equations
-  /// near it, minimise |r|^2 there by Newton's method with its second-order term (the paper's
-  /// least-squares solution, Section 7; docs/line-solver.md, "Least-squares minima"). Needs the
-  /// semi-analytic Jacobian; otherwise such a stop is reported not converged.
-  bool least_squares = true;
-  /// The relative accuracy of the residual's integrals (LineNodeRule, docs/theory.md section 7),
-  /// at most 1e-4: 0, the default, the scalar's epsilon (every integral exact to rounding); a
-  /// larger tolerance builds fewer quadrature nodes (a cheaper residual). The bound is
-  /// pessimistic: on the paper's scene 1e-8 moved the solution by at most 1e-12 and 1e-4 by at
-  /// most 6e-8 (docs/performance.md, "The fast setting").
-  double quadrature_tolerance = 0;
-  /// max |r| of the scaled equations at which an intermediate stage of the continuation in N
-  /// (docs/line-solver.md, "Continuation in N") stops and seeds the next: 0, the default, a root
-  /// of every stage; at most 0.1. A stage's iterate only seeds the next, so a loose stop saves
-  /// its end game (the Newton steps to a root) where the last stage lands on the same root
-  /// (docs/performance.md, "The fast setting").
-  double stage_tolerance = 0;
-  /// Levenberg-Marquardt's starting damping at the stages after the first (the first, from the
-  /// cold start or a seed, starts at 1e-3): the default 1e-3; 1e-12 ... 1. A stage starts from
-  /// the previous stage's solution padded with zero coefficients, near its root, where an
-  /// undamped Gauss-Newton step is the right first step.
-  double stage_damping = 1e-3;
-
-  /// The fast setting: the smallest discretisation measured within 1% of the converged
-  /// least-squares solution (oversampled, 24 terms in s) in a(0), l, d, chi and b(0) (the last
-  /// relative to a(0)) at 100 speeds V tau/a0 = 1e-3 ... 1e3 of the paper's scene
-  /// (docs/performance.md, "The fast setting"): 5 terms, integrals to 1e-4, intermediate stages
-  /// to 1e-2 and started at the damping 1e-9. Its quadrature rule is the solver's template
-  /// argument: 6-point panels (FastLineSolverD) serve this tolerance with half the nodes of the
-  /// default 12-point ones, at the same errors.
-  static LineOptions fast() {
-    LineOptions options;
-    options.terms = 5;
-    options.quadrature_tolerance = 1e-4;
-    options.stage_tolerance = 1e-2;
-    options.stage_damping = 1e-9;
-    return options;
-  }
-
-  void validate() const {
-    detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
-    detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,
-                    "1 <= oversampling <= 8");
-    detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations",
-                    max_iterations, "1 <= max_iterations <= 100000");
-    detail::require(quadrature_tolerance >= 0 && quadrature_tolerance <= 1e-4,
-                    "quadrature_tolerance", quadrature_tolerance,
-                    "0 <= quadrature_tolerance <= 1e-4 (0: the scalar's epsilon)");
-    detail::require(stage_tolerance >= 0 && stage_tolerance <= 0.1, "stage_tolerance",
-                    stage_tolerance, "0 <= stage_tolerance <= 0.1 (0: a root of every stage)");
-    detail::require(stage_damping >= 1e-12 && stage_damping <= 1, "stage_damping", stage_damping,
-                    "1e-12 <= stage_damping <= 1");
-  }
-};
 
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
 /// quadrature rule (applied on the graded panels of every line integral). A material with one
@@ -219,26 +127,12 @@ class LineSolver {
   }
 
  private:
-  /// The solver's units (docs/theory.md, "Scaling"): c1 and c2 in a unit of curvature
-  /// 2^curvature in which c1 lies in [1, 2), lengths in a unit 2^length near the long-term a0,
-  /// d in 2^(curvature + 2 length). Powers of two: every product and quotient rounds as in the
-  /// caller's units wherever those neither overflow nor underflow.
-  struct Units {
-    Real c1, c2;
-    int curvature, length;
-  };
+  /// The solver's units (docs/theory.md, "Scaling"; line/detail/line_units.hpp).
+  using Units = detail::LineUnits<Real>;
 
   static LineProblem<Real> problem(const Units& u, const StaticLineContact<Real>& slow, Real f,
                                    Real vtau) {
     return {u.c1, u.c2, vtau, f, slow.a0, slow.l, u.c1 * slow.a0 * slow.a0 * slow.l / 3};
-  }
-
-  /// The shape with a_ref and l in the caller's units (for the messages of the warnings).
-  static LineShape<Real> caller_shape(LineShape<Real> shape, const Units& u) {
-    shape.a_ref = times_power_of_two(shape.a_ref, u.length);
-    shape.l = times_power_of_two(shape.l, u.length);
-    shape.centre = times_power_of_two(shape.centre, u.length);
-    return shape;
   }
 
   /// A solution of the scene with shape and penetration d: converged, a root, no iterations;
@@ -280,12 +174,6 @@ class LineSolver {
   /// docs/theory.md (G5)); their shapes are expanded in twice as many for the line solver.
   static constexpr int profile_static_terms = 12;
 
-  /// A profile's units: curvature C1's power of two, length a power of two near the long-term
-  /// a(0) (a0_caller, in the caller's units).
-  static Units profile_units(Real c1, Real a0_caller) {
-    const auto k1 = binary<Real>(c1);
-    return Units{k1.m, Real(0), k1.e, binary<Real>(a0_caller).e};
-  }
   /// A static profile contact as the solver's shape (unit a_ref given in the caller's units,
   /// b = b_over a_ref; with its odd parts and centre if `asymmetric`) and penetration, in the
   /// units u.
@@ -294,10 +182,7 @@ class LineSolver {
                                                            bool asymmetric = false) {
     LineShape<Real> shape =
         profile_line_shape(s, a_ref, 2 * profile_static_terms, b_over, asymmetric);
-    shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
-    shape.l = times_power_of_two(shape.l, -u.length);
-    shape.centre = times_power_of_two(shape.centre, -u.length);
-    return {std::move(shape), times_power_of_two(s.d, -(u.curvature + 2 * u.length))};
+    return {u.shape_in_units(std::move(shape)), u.penetration_in_units(s.d)};
   }
   /// The solve of a profile whose long-term static contact did not converge: not converged, its
   /// reason, in the caller's units.
@@ -342,19 +227,9 @@ class LineSolver {
     }
   }
 
-  /// Terms of the continuation stages that lead to `terms`: 2, 4, 8, 16, 32 below
-  /// it, then `terms` itself (docs/line-solver.md, "Continuation in N").
-  static std::vector<int> continuation_stages(int terms) {
-    std::vector<int> stages;
-    for (int n : {2, 4, 8, 16, 32})
-      if (n < terms) stages.push_back(n);
-    stages.push_back(terms);
-    return stages;
-  }
-
   /// max |r| of the scaled equations below which the iterate is a root (`LineSolution::root`):
   /// 64 sqrt(eps), the minimisers' stop at a root and the solution's flag.
-  static Real root_tolerance() { return numerics::default_root_tolerance<Real>(); }
+  static Real root_tolerance() { return detail::line_root_tolerance<Real>(); }
 
   /// The Levenberg-Marquardt settings of every stage (the Jacobian semi-analytic unless
   /// LineOptions::jacobian asks for differences).
@@ -410,10 +285,8 @@ class LineSolver {
       return rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
     // The seed in the solver's units (a shape from a far scene may leave the range there).
     Solution seed = *given;
-    seed.shape.a_ref = times_power_of_two(seed.shape.a_ref, -u.length);
-    seed.shape.l = times_power_of_two(seed.shape.l, -u.length);
-    seed.shape.centre = times_power_of_two(seed.shape.centre, -u.length);
-    seed.d = times_power_of_two(seed.d, -u.curvature - 2 * u.length);
+    seed.shape = u.shape_in_units(std::move(seed.shape));
+    seed.d = u.penetration_in_units(seed.d);
     const Solution* start = &seed;
     if (!usable_seed(*start)) {
       Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
@@ -498,7 +371,7 @@ class LineSolver {
     // the two-term iteration begins: the answer is the cold start's to the iteration's tolerance,
     // except in the slow regime where the two-term equations have several roots or stop short of
     // one from one start only (docs/line-solver.md, "Continuation in speed").
-    const std::vector<int> stages = continuation_stages(options_.terms);
+    const std::vector<int> stages = detail::continuation_stages(options_.terms);
     if (start != nullptr && start->shape.alpha.size() > 0) {
       // A solution of a nearby scene.
       shape = start->shape;
@@ -541,7 +414,7 @@ class LineSolver {
       // Whether jac is the Jacobian at the returned root (not so once the minimisation ran).
       bool jac_at_root = out.converged;
       if (last && minimise && !out.converged && !out.undefined) {
-        out = least_squares_solution(res, x, r, settings, iterations);
+        out = detail::least_squares_solution(res, x, r, settings, iterations);
         jac_at_root = false;
       }
       if (out.undefined)
@@ -565,7 +438,7 @@ class LineSolver {
         // O(eps^0.6 / sigma_min); what the estimate decides is its side of sqrt(eps), against
         // 1e-15 ... 1e-11 at ordinary roots and far beyond it at folds (docs/line-solver.md).
         if (out.converged && least_squares && r.cwiseAbs().maxCoeff() <= root_tolerance())
-          estimate = jac_at_root ? newton_correction(jac, r) : newton_correction(res, x);
+          estimate = jac_at_root ? detail::newton_correction<Real>(jac, r) : detail::newton_correction<Real>(res, x);
         const bool narrow = std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits;
         if (narrow && !(estimate <= sqrt_eps)) {
           out.converged = false;
@@ -604,57 +477,6 @@ class LineSolver {
                    iterations);
   }
 
-  /// Where Levenberg-Marquardt stopped short of a root (at a minimum with no root near, without
-  /// a descent step or at the iteration limit): the paper's least-squares solution (Section 7),
-  /// the certified minimum of |r|^2 (numerics::least_squares_minimum), whose Newton iteration
-  /// converges linearly where the minimum is flat (10 times the iterations). Needs the
-  /// residual's semi-analytic Jacobian. Adds the iterations taken to `iterations`.
-  template <class Residual>
-  static numerics::LeastSquaresOutcome least_squares_solution(
-      const Residual& res, Vector& x, Vector& r, const numerics::LeastSquaresOptions<Real>& settings,
-      int& iterations) {
-    numerics::LeastSquaresOptions<Real> minimisation = settings;
-    minimisation.max_iterations = 10 * settings.max_iterations;
-    numerics::LeastSquaresOutcome out = numerics::least_squares_minimum(res, x, r, minimisation);
-    iterations += out.iterations;
-    // A residual below the root tolerance on the way: Levenberg-Marquardt certifies the root, or
-    // stops at a minimum again, which the minimisation then certifies (at most 4 turns).
-    for (int turn = 0; turn < 4 && out.root_near; ++turn) {
-      out = numerics::levenberg_marquardt(res, x, r, settings);
-      iterations += out.iterations;
-      if (out.converged || out.undefined || !out.minimum) break;
-      out = numerics::least_squares_minimum(res, x, r, minimisation);
-      iterations += out.iterations;
-    }
-    if (out.converged && !out.root_near && r.cwiseAbs().maxCoeff() > root_tolerance())
-      out.reason = "least-squares minimum (no root of the line equations here)";
-    // Below the root tolerance with no step that lowers |r| (the residual's rounding floor): a
-    // root to the accuracy with which the equations are evaluated.
-    if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= root_tolerance()) {
-      out.converged = true;
-      out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
-    }
-    return out;
-  }
-
-  /// max |J^+ r| at x (the minimum-norm least-squares Newton correction, by the singular value
-  /// decomposition of the semi-analytic Jacobian): the error estimate of a root. Infinite where
-  /// the Jacobian is undefined.
-  template <class Residual>
-  static Real newton_correction(const Residual& res, const Vector& x) {
-    Vector r;
-    Matrix jac;
-    if (!res.jacobian(x, r, jac)) return std::numeric_limits<Real>::infinity();
-    return newton_correction(jac, r);
-  }
-  /// max |J^+ r| from a given Jacobian, J^+ r by the complete orthogonal decomposition (the
-  /// minimum-norm least-squares solution, as the singular value decomposition gives it, at a
-  /// fraction of its cost).
-  static Real newton_correction(const Matrix& jac, const Vector& r) {
-    const Eigen::CompleteOrthogonalDecomposition<Matrix> cod(jac);
-    return cod.solve(r).cwiseAbs().maxCoeff();
-  }
-
   template <class Residual>
   Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
                 Real vtau, const Residual& res, const Vector& x,
@@ -673,21 +495,14 @@ class LineSolver {
     // tolerance, the solver's own rule (docs/line-solver.md, "Rolling friction").
     if constexpr (Quadrature::points < 12) {
       sol.chi = options_.quadrature_tolerance > 0
-                    ? rolling_friction<Quadrature>(sol)
-                    : rolling_friction<GaussLegendre<Real, 12>>(sol);
+                    ? detail::line_rolling_friction<Quadrature>(sol)
+                    : detail::line_rolling_friction<GaussLegendre<Real, 12>>(sol);
     } else {
-      sol.chi = rolling_friction<Quadrature>(sol);
+      sol.chi = detail::line_rolling_friction<Quadrature>(sol);
     }
     add_warnings(sol, u, std::same_as<typename Residual::drop_type, ParabolicDrop>);
-    if (converged && !root) sol.warnings.push_back(minimum_warning(rmax));
+    if (converged && !root) sol.warnings.push_back(detail::minimum_warning(rmax));
     return sol;
-  }
-
-  static std::string minimum_warning(Real rmax) {
-    return "the line equations have no root here: a least-squares minimum with max |r| = " +
-           std::to_string(double(rmax)) +
-           " (the line theory does not close at this speed and discretisation; "
-           "docs/line-solver.md, \"Least-squares minima\")";
   }
 
   template <class Residual>
@@ -698,69 +513,12 @@ class LineSolver {
     return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
   }
 
-  /// chi = C1 int V n(y) dy / int F0 dy, V n = V (F0 f/(1+f) - Q) = (C1/4) strip_first_moment
-  /// (Eq. 54 strip by strip in the form (P7); docs/theory.md section 4).
-  /// Over [0, l] for a symmetric contact (the ratio of two integrals over half of it), over both
-  /// halves of an asymmetric one (nodes at distances from its centre), on graded panels of the
-  /// Rule. I1/I0 and I2/I0 from the double interpolants (within 2.5 eps) at each node.
-  template <class Rule>
-  static Real rolling_friction(const Solution& sol) {
-    std::vector<Real> nodes, weights;
-    const Real l = sol.shape.l;
-    detail::append_graded_nodes<Rule>(nodes, weights, l, l / 2,
-                                      l * std::numeric_limits<Real>::epsilon() * 16);
-    const bool both = sol.shape.asymmetric();
-    const std::size_t half = nodes.size();
-    Real num = 0, den = 0;
-    for (std::size_t k = 0; k < (both ? 2 * half : half); ++k) {
-      const std::size_t j = k % half;
-      const Real y = both ? Real(sol.shape.centre + (k < half ? nodes[j] : -nodes[j])) : nodes[j];
-      const auto s = sol.functions(y);
-      if (!(s.a > 0)) continue;
-      const Real alpha = strip_alpha(s.a, sol.vtau, sol.f);
-      const Real vn = sol.c1 / 4 *
-                      strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f,
-                                         special::bessel_i1_over_i0_fast(alpha),
-                                         special::bessel_i2_over_i0_fast(alpha));
-      num += weights[j] * vn;
-      den += weights[j] * s.f0;
-    }
-    return sol.c1 * num / den;
-  }
-
-  /// The solution in the caller's units: a converged one's numbers each normal and finite (b and
-  /// chi may be zero), else an error naming the inputs (docs/errors.md); a non-converged one
-  /// scaled back as it is.
-  template <class Inputs>
-  static Solution in_caller_units(Solution sol, const Units& u, Real c1, const Inputs& inputs) {
-    const int length = u.length, curvature = u.curvature;
-    const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
-      if (!sol.converged) return times_power_of_two(x, exponent);
-      return detail::representable(x, exponent, what, inputs, zero_allowed);
-    };
-    const Real centre = sol.shape.centre;  // 0 for a symmetric contact
-    const Real a_origin = sol.shape.a(centre), b_origin = sol.shape.b(centre);
-    in(a_origin, length, "the half width a(0)", false);
-    in(b_origin, length, "the offset b(0)", true);
-    sol.shape.a_ref = in(sol.shape.a_ref, length, "the unit a_ref of a(y), b(y)", false);
-    sol.shape.l = in(sol.shape.l, length, "the half length l", false);
-    sol.shape.centre = in(centre, length, "the contact's centre c", true);
-    sol.d = in(sol.d, curvature + 2 * length, "the penetration d", false);
-    sol.a_long_term = in(sol.a_long_term, length, "the long-term static half width a0", false);
-    sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
-    sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
-    sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
-    if constexpr (SingleTimeModel<Material>) sol.vtau = in(sol.vtau, length, "V tau", true);
-    sol.c1 = c1;
-    return sol;
-  }
-
   /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid (`bounds`),
   /// the bounds of the rolling contact (line_bound_warnings, to the root tolerance, plus the
   /// residual of a least-squares minimum, which meets the equations only to it); for a profile
   /// (B2), (B3) are not derived (docs/theory.md (RP10)).
   static void add_warnings(Solution& sol, const Units& u, bool bounds = true) {
-    for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
+    for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
       sol.warnings.push_back(std::move(w));
     if (!bounds) return;
     const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
@@ -828,7 +586,7 @@ class LineSolver {
                                             profile_static_terms);
       if (!slow_profile->converged) return profile_static_failure(*slow_profile, c, Real(0));
       const Real a0_caller = slow_profile->a(slow_profile->centre());
-      u = profile_units(c1, a0_caller);
+      u = Units::profile(c1, a0_caller);
       const auto in_units = profile_in_units(*slow_profile, u, a0_caller, Real(0), asymmetric);
       slow = {in_units.first.a_ref, in_units.first.l, in_units.second};
     }
@@ -925,12 +683,9 @@ class LineSolver {
       LineSpectrumMoments<Real> moments;
       Real d;
       if (seed != nullptr) {
-        shape = seed->shape;
-        shape.a_ref = times_power_of_two(shape.a_ref, -u.length);
-        shape.l = times_power_of_two(shape.l, -u.length);
-        shape.centre = times_power_of_two(shape.centre, -u.length);
+        shape = u.shape_in_units(seed->shape);
         moments = seed->moments;
-        d = times_power_of_two(seed->d, -u.curvature - 2 * u.length);
+        d = u.penetration_in_units(seed->d);
       } else {
         const auto h = [&](Real A) {
           const auto st = spectrum_strip(A * eff.a0, lengths);
@@ -975,7 +730,7 @@ class LineSolver {
       std::optional<LineSpectrumResidual<Real, Quadrature, std::remove_const_t<decltype(drop)>>>
           last;
       const bool least_squares = minimises();
-      const std::vector<int> stages = continuation_stages(options_.terms);
+      const std::vector<int> stages = detail::continuation_stages(options_.terms);
       for (std::size_t k = 0; k < stages.size(); ++k) {
         const int n = stages[k];
         last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop,
@@ -993,7 +748,7 @@ class LineSolver {
         iterations += out.iterations;
         // The last stage: where the equations have no root, the least-squares solution.
         if (n == stages.back() && least_squares && !out.converged && !out.undefined)
-          out = least_squares_solution(*last, x, r, settings, iterations);
+          out = detail::least_squares_solution(*last, x, r, settings, iterations);
         shape = last->shape(x);
         moments = last->moments(x);
         d = last->penetration(x);
@@ -1025,8 +780,8 @@ class LineSolver {
                      "not positive)";
       }
       if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
-      if (sol.converged && !sol.root) sol.warnings.push_back(minimum_warning(rmax));
-      for (auto& w : line_domain_warnings(caller_shape(sol.shape, u)))
+      if (sol.converged && !sol.root) sol.warnings.push_back(detail::minimum_warning(rmax));
+      for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
         sol.warnings.push_back(std::move(w));
       return sol;
     };
@@ -1051,7 +806,7 @@ class LineSolver {
                                   ")");
       }
     }
-    return in_caller_units(std::move(result), u, c1, inputs);
+    return detail::in_caller_units(std::move(result), u, c1, inputs);
   }
 
   Material material_;
@@ -1113,7 +868,7 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
     }
     return closed_form(u, slow, slow, c, f, "static (closed form)");
   }();
-  return in_caller_units(std::move(sol), u, scene.c1, inputs);
+  return detail::in_caller_units(std::move(sol), u, scene.c1, inputs);
   }
 }
 
@@ -1146,7 +901,7 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
       static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
   if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
   const Real a0_caller = slow_c.a(slow_c.centre());
-  const Units u = profile_units(c1, a0_caller);
+  const Units u = Units::profile(c1, a0_caller);
   const int d_unit = u.curvature + 2 * u.length;
   const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
     return profile_in_units(s, u, a0_caller, b_over, asymmetric);
@@ -1195,7 +950,7 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
                            "static (static profile contact)");
   }();
   check_body_end(sol, roller, u);
-  return in_caller_units(std::move(sol), u, c1, inputs);
+  return detail::in_caller_units(std::move(sol), u, c1, inputs);
   }
 }
 

@@ -24,6 +24,7 @@
 #include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/line/line_scene.hpp>
 
 namespace viscoroll {
 
@@ -34,14 +35,6 @@ struct StaticLineContact {
   Real l;   ///< half length
   Real d;   ///< penetration, (1/2) C1 a0^2 ln(4 l / a0)
 };
-
-/// Largest curvature ratio C2/C1 for which the static line-contact equations have a solution:
-/// max over rho of (ln 4 rho - 1)/rho^2, at rho = e^(3/2)/4, equal to 8 e^-3.
-template <RealScalar Real>
-Real max_line_contact_curvature_ratio() {
-  using std::exp;
-  return 8 * exp(Real(-3));
-}
 
 /// The static line contact in units of powers of two: a0 and l in 2^length, d in
 /// 2^(curvature + 2 length), for c1 and c2 given in a unit of curvature 2^curvature.
