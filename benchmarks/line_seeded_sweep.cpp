@@ -1,15 +1,18 @@
 // line_seeded_sweep: what a seeded solve of a sweep costs and which root it lands on, on the
 // paper's scene (Panek & Kalker 1980, Section 7: f = 9, nu = 0.5, C2/C1 = (ln 20 - 1)/25, the
 // load of a static a0 = C1 = 1, tau = 1) at the 100 speeds V tau/a0 = 10^(-3 + 6i/99) with
-// LineOptions::fast(). Per speed, one line:
+// LineOptions::fast() on 6-point panels (FastLineSolverD). Per speed, one line:
 //   cold: LineSolver::solve(scene), the cold start (plane seed, continuation stages 2, 4, N);
 //   seeded: LineSolver::solve(scene, &previous), the sweep's solve (the same stages from the
-//     previous speed's seeded solution; the first speed is the cold one);
+//     previous speed's seeded solution where that is a root, the rule of viscoroll::sweep,
+//     detail::usable_as_seed; else, and at the first speed, the cold one);
 //   direct: Levenberg-Marquardt at the final N straight from the previous speed's seeded
 //     solution (packed at N, no stages), then the least-squares minimisation where it stops
 //     short, as the solver's last stage does;
 //   predicted: the same from the secant predictor 2 x(i-1) - x(i-2) of the two previous seeded
-//     solutions (even steps in ln V).
+//     solutions (even steps in ln V; from x(i-1) where x(i-2) is not a root).
+// Where the previous speed is no root, the sweep solves cold, and so do direct and predicted
+// here: the line says "cold start" and the cold time counts for all four.
 // Columns: iterations (LM steps plus minimisation steps), residual and Jacobian evaluations
 // (direct and predicted only), the best of `--repeat` wall times in ms, converged/root flags, and
 // the largest relative difference over a(0), b(0), l, d and chi of each against cold and of
@@ -25,12 +28,14 @@
 #include <string_view>
 #include <vector>
 #include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/sweep.hpp>
 
 namespace {
 
-using Solver = viscoroll::LineSolverD;
+using Solver = viscoroll::FastLineSolverD;
 using Solution = Solver::Solution;
-using Residual = viscoroll::LineResidual<double, viscoroll::GaussLegendre<double, 12>>;
+using Rule = viscoroll::GaussLegendre<double, 6>;  // the fast setting's panels
+using Residual = viscoroll::LineResidual<double, Rule>;
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 
@@ -49,26 +54,6 @@ struct Counted {
     return res.jacobian(x, r, j);
   }
 };
-
-/// chi of a shape (Eq. 54 strip by strip in the form (P7)), as LineSolver::rolling_friction.
-double rolling_friction(const Solution& sol) {
-  std::vector<double> nodes, weights;
-  const double l = sol.shape.l;
-  viscoroll::detail::append_graded_nodes<viscoroll::GaussLegendre<double, 12>>(
-      nodes, weights, l, l / 2, l * std::numeric_limits<double>::epsilon() * 16);
-  double num = 0, den = 0;
-  for (std::size_t j = 0; j < nodes.size(); ++j) {
-    const auto s = sol.functions(nodes[j]);
-    if (!(s.a > 0)) continue;
-    const double alpha = viscoroll::strip_alpha(s.a, sol.vtau, sol.f);
-    num += weights[j] * sol.c1 / 4 *
-           viscoroll::strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f,
-                                         viscoroll::special::bessel_i1_over_i0(alpha),
-                                         viscoroll::special::bessel_i2_over_i0(alpha));
-    den += weights[j] * s.f0;
-  }
-  return sol.c1 * num / den;
-}
 
 struct Direct {
   Solution sol;
@@ -109,7 +94,7 @@ Direct direct(const Residual& res, Vector x, const Solution& like, int max_itera
   out.jacobians = p.jacobians;
   out.sol.shape = res.shape(x);
   out.sol.d = res.penetration(x);
-  out.sol.chi = rolling_friction(out.sol);
+  out.sol.chi = viscoroll::detail::line_rolling_friction<Rule>(out.sol);
   return out;
 }
 
@@ -169,9 +154,11 @@ int main(int argc, char** argv) {
     Solution cold;
     const double t_cold = best_ms(repeat, [&] { cold = solver.solve(sc); });
     sum_cold += t_cold;
-    if (i == 0) {
+    if (i == 0 || !viscoroll::detail::usable_as_seed(seeded.back())) {
       seeded.push_back(cold);
       sum_seeded += t_cold;
+      sum_direct += t_cold;
+      sum_predicted += t_cold;
       std::printf("%2zu %.4e | %3d %7.3f %d %d | cold start\n", i, speeds[i], cold.iterations,
                   t_cold, cold.converged, cold.root);
       continue;
@@ -192,7 +179,9 @@ int main(int argc, char** argv) {
     const Vector from = res.pack(previous.shape, previous.d);
     Direct d, p;
     const double t_direct = best_ms(repeat, [&] { d = direct(res, from, s, max_iterations); });
-    const Vector before = i >= 2 ? res.pack(seeded[i - 2].shape, seeded[i - 2].d) : from;
+    const Vector before = i >= 2 && viscoroll::detail::usable_as_seed(seeded[i - 2])
+                              ? res.pack(seeded[i - 2].shape, seeded[i - 2].d)
+                              : from;
     const Vector predictor = 2 * from - before;
     const double t_predicted =
         best_ms(repeat, [&] { p = direct(res, predictor, s, max_iterations); });
@@ -215,7 +204,7 @@ int main(int argc, char** argv) {
                 difference(cold, p.sol), dp);
   }
   std::printf("# sum of the best times, ms: cold %.1f, seeded %.1f, direct %.1f and predicted "
-              "%.1f (each plus the first speed's cold start)\n",
+              "%.1f (each with the cold starts where there is no root to seed from)\n",
               sum_cold, sum_seeded, sum_direct, sum_predicted);
   std::printf("# largest difference: seeded - cold %.1e (%d speeds over 1e-6), direct - seeded "
               "%.1e (%d), predicted - seeded %.1e (%d)\n",
