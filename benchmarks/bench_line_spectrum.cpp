@@ -20,8 +20,7 @@ namespace {
 viscoroll::PronyCreep<double> material(int m) {
   if (m == 2) return viscoroll::PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}});
   std::vector<viscoroll::PronyTerm<double>> terms;
-  for (int k = 0; k < m; ++k)
-    terms.push_back({9.0 / m, std::pow(10.0, -3 + 6.0 * k / (m - 1))});
+  for (int k = 0; k < m; ++k) terms.push_back({9.0 / m, std::pow(10.0, -3 + 6.0 * k / (m - 1))});
   return viscoroll::PronyCreep<double>(1.0, 0.5, terms);
 }
 
@@ -57,7 +56,8 @@ void BM_line_spectrum(benchmark::State& state) {
     const double got[] = {s.a(0), s.b(0), s.l(), s.d, s.chi};
     const double want[] = {exact.a(0), exact.b(0), exact.l(), exact.d, exact.chi};
     double change = 0;
-    for (int i = 0; i < 5; ++i) change = std::max(change, std::abs(got[i] - want[i]) / std::abs(want[i]));
+    for (int i = 0; i < 5; ++i)
+      change = std::max(change, std::abs(got[i] - want[i]) / std::abs(want[i]));
     state.counters["change"] = benchmark::Counter(change);
   }
 }

@@ -111,8 +111,9 @@ double best_ms(int repeat, F&& f) {
   for (int k = 0; k < repeat; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     f();
-    best = std::min(best, std::chrono::duration<double, std::milli>(
-                              std::chrono::steady_clock::now() - t0).count());
+    best = std::min(
+        best,
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   return best;
 }
@@ -147,8 +148,9 @@ int main(int argc, char** argv) {
   double sum_cold = 0, sum_seeded = 0, sum_direct = 0, sum_predicted = 0;
   double worst_seeded = 0, worst_direct = 0, worst_predicted = 0;
   int other_direct = 0, other_predicted = 0, other_seeded = 0;
-  std::printf("# i V_tau/a0 | cold: it ms conv root | seeded: it ms conv root diff_cold | "
-              "direct: it res jac ms conv root diff_cold diff_seeded | predicted: the same\n");
+  std::printf(
+      "# i V_tau/a0 | cold: it ms conv root | seeded: it ms conv root diff_cold | "
+      "direct: it res jac ms conv root diff_cold diff_seeded | predicted: the same\n");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     const auto sc = scene(speeds[i]);
     Solution cold;
@@ -187,27 +189,27 @@ int main(int argc, char** argv) {
         best_ms(repeat, [&] { p = direct(res, predictor, s, max_iterations); });
     sum_direct += t_direct;
     sum_predicted += t_predicted;
-    const double ds = difference(cold, s), dd = difference(s, d.sol),
-                 dp = difference(s, p.sol);
+    const double ds = difference(cold, s), dd = difference(s, d.sol), dp = difference(s, p.sol);
     worst_seeded = std::max(worst_seeded, ds);
     worst_direct = std::max(worst_direct, dd);
     worst_predicted = std::max(worst_predicted, dp);
     other_seeded += ds > 1e-6;
     other_direct += dd > 1e-6;
     other_predicted += dp > 1e-6;
-    std::printf("%2zu %.4e | %3d %7.3f %d %d | %3d %7.3f %d %d %.1e | %3d %3ld %3ld %7.3f %d %d "
-                "%.1e %.1e | %3d %3ld %3ld %7.3f %d %d %.1e %.1e\n",
-                i, speeds[i], cold.iterations, t_cold, cold.converged, cold.root, s.iterations,
-                t_seeded, s.converged, s.root, ds, d.iterations, d.residuals, d.jacobians,
-                t_direct, d.converged, d.root, difference(cold, d.sol), dd, p.iterations,
-                p.residuals, p.jacobians, t_predicted, p.converged, p.root,
-                difference(cold, p.sol), dp);
+    std::printf(
+        "%2zu %.4e | %3d %7.3f %d %d | %3d %7.3f %d %d %.1e | %3d %3ld %3ld %7.3f %d %d "
+        "%.1e %.1e | %3d %3ld %3ld %7.3f %d %d %.1e %.1e\n",
+        i, speeds[i], cold.iterations, t_cold, cold.converged, cold.root, s.iterations, t_seeded,
+        s.converged, s.root, ds, d.iterations, d.residuals, d.jacobians, t_direct, d.converged,
+        d.root, difference(cold, d.sol), dd, p.iterations, p.residuals, p.jacobians, t_predicted,
+        p.converged, p.root, difference(cold, p.sol), dp);
   }
-  std::printf("# sum of the best times, ms: cold %.1f, seeded %.1f, direct %.1f and predicted "
-              "%.1f (each with the cold starts where there is no root to seed from)\n",
-              sum_cold, sum_seeded, sum_direct, sum_predicted);
-  std::printf("# largest difference: seeded - cold %.1e (%d speeds over 1e-6), direct - seeded "
-              "%.1e (%d), predicted - seeded %.1e (%d)\n",
-              worst_seeded, other_seeded, worst_direct, other_direct, worst_predicted,
-              other_predicted);
+  std::printf(
+      "# sum of the best times, ms: cold %.1f, seeded %.1f, direct %.1f and predicted "
+      "%.1f (each with the cold starts where there is no root to seed from)\n",
+      sum_cold, sum_seeded, sum_direct, sum_predicted);
+  std::printf(
+      "# largest difference: seeded - cold %.1e (%d speeds over 1e-6), direct - seeded "
+      "%.1e (%d), predicted - seeded %.1e (%d)\n",
+      worst_seeded, other_seeded, worst_direct, other_direct, worst_predicted, other_predicted);
 }

@@ -6,11 +6,11 @@
 // errors of the N = 4 solves against the BEM: relative in a(0), l, d, chi and b(0), and b(0)'s
 // absolute error over the BEM's a(0) (the shift of the contact's centre against its half-width).
 //   line_vs_bem_spectrum [grid]   (default 32)
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -28,7 +28,9 @@ int main(int argc, char** argv) {
       {"two terms", PronyCreep<double>(1.0, 0.5, {{3.0, 0.05}, {6.0, 5.0}})},
       {"twenty terms", PronyCreep<double>(1.0, 0.5, twenty)}};
   const double c2 = (std::log(20.0) - 1) / 25;
-  std::printf("| material | V | active (N) | a(0): BEM / line | b(0): BEM / line | l: BEM / line | d: BEM / line | chi: BEM / line | line s |\n");
+  std::printf(
+      "| material | V | active (N) | a(0): BEM / line | b(0): BEM / line | l: BEM / line | d: BEM "
+      "/ line | chi: BEM / line | line s |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   // Largest errors of the N = 4 solves, per material: a(0), l, d, chi, b(0), |b - b_BEM|/a_BEM.
   std::map<std::string, std::vector<double>> worst;
@@ -39,14 +41,18 @@ int main(int argc, char** argv) {
       const viscoroll::BemScene<double> bem_scene{.c1 = 1.0, .c2 = c2, .load = 1.0, .speed = speed};
       const auto e = viscoroll::BemSolver(m, options).solve(bem_scene);
       for (const int terms : {4, 6}) {
-        const viscoroll::LineSolver<double, PronyCreep<double>> line(m, viscoroll::LineOptions{.terms = terms});
+        const viscoroll::LineSolver<double, PronyCreep<double>> line(
+            m, viscoroll::LineOptions{.terms = terms});
         const auto start = std::chrono::steady_clock::now();
         const auto s = line.solve({.c1 = 1.0, .c2 = c2, .load = 1.0, .speed = speed});
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("| %s | %g | %d (%d) | %.4f / %.4f | %.4f / %.4f | %.3f / %.3f | %.4f / %.4f | %.4f / %.4f | %.2f%s |\n",
-                    name, speed, s.active_terms, terms, e.a0, s.a(0), e.b0, s.b(0), e.l, s.l(), e.d, s.d,
-                    e.chi, s.chi, seconds, s.converged ? "" : (" (not converged: " + s.reason + ")").c_str());
+        std::printf(
+            "| %s | %g | %d (%d) | %.4f / %.4f | %.4f / %.4f | %.3f / %.3f | %.4f / %.4f | %.4f / "
+            "%.4f | %.2f%s |\n",
+            name, speed, s.active_terms, terms, e.a0, s.a(0), e.b0, s.b(0), e.l, s.l(), e.d, s.d,
+            e.chi, s.chi, seconds,
+            s.converged ? "" : (" (not converged: " + s.reason + ")").c_str());
         std::fflush(stdout);
         if (terms == 4 && s.converged) {
           auto& w = worst.try_emplace(name, 6, 0.0).first->second;
@@ -58,8 +64,10 @@ int main(int argc, char** argv) {
       }
       if (!e.converged) std::printf("(BEM not converged: %s)\n", e.reason.c_str());
     }
-  std::printf("\nlargest errors at N = 4 against the BEM\n\n| material | a(0) | l | d | chi | b(0) | Δb(0)/a(0) |\n|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\nlargest errors at N = 4 against the BEM\n\n| material | a(0) | l | d | chi | b(0) | "
+      "Δb(0)/a(0) |\n|---|---|---|---|---|---|---|\n");
   for (const auto& [name, w] : worst)
-    std::printf("| %s | %.2f%% | %.2f%% | %.2f%% | %.2f%% | %.1f%% | %.2f%% |\n", name.c_str(), 100 * w[0],
-                100 * w[1], 100 * w[2], 100 * w[3], 100 * w[4], 100 * w[5]);
+    std::printf("| %s | %.2f%% | %.2f%% | %.2f%% | %.2f%% | %.1f%% | %.2f%% |\n", name.c_str(),
+                100 * w[0], 100 * w[1], 100 * w[2], 100 * w[3], 100 * w[4], 100 * w[5]);
 }

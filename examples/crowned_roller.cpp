@@ -17,8 +17,8 @@
 //   ratio f0_max / F0(0) against speed for each crown radius).
 // grid: BemOptions::grid, elements per semi-axis (default 32). Against N = 24, d moves by 0.1%,
 // chi by 0.5% and the edge-peak ratio by up to 3% (8% at 10 m/s with the 25 mm crown, where the
-// peak is narrowest): on this stiffer rubber the peak is resolved to a few per cent (docs/rollers.md).
-// Exit status 0 only if every solve converged.
+// peak is narrowest): on this stiffer rubber the peak is resolved to a few per cent
+// (docs/rollers.md). Exit status 0 only if every solve converged.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

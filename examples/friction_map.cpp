@@ -62,9 +62,9 @@ unset multiplot
 }  // namespace
 
 int main(int argc, char** argv) {
-  const fs::path data = argc > 1 ? fs::path(argv[1])
-                                 : fs::path(__FILE__).parent_path() / "data" /
-                                       "dma_known_spectrum_wlf.csv";
+  const fs::path data =
+      argc > 1 ? fs::path(argv[1])
+               : fs::path(__FILE__).parent_path() / "data" / "dma_known_spectrum_wlf.csv";
   const fs::path dir = argc > 2 ? fs::path(argv[2]) : fs::path("out/friction_map");
   try {
     const auto measured = viscoroll::read_dma_csv_file<double>(data);
@@ -74,8 +74,7 @@ int main(int argc, char** argv) {
     const auto fit = viscoroll::fit_prony(measured, fit_options);
     std::printf("fit of %s: %s\n", data.string().c_str(), fit.report.summary.c_str());
     std::printf("material: G_inf = %.4g Pa, glassy modulus %.4g Pa, %zu relaxation terms\n",
-                fit.material.g_inf(), fit.material.glassy_modulus(),
-                fit.report.nonzero_terms);
+                fit.material.g_inf(), fit.material.glassy_modulus(), fit.report.nonzero_terms);
     fs::create_directories(dir);
     std::ofstream csv(dir / "friction_map.csv");
     csv << "temperature_c,speed_m_s,chi,a_m,b_m,pmax_pa,active_terms,converged\n";

@@ -51,8 +51,9 @@ int parse_count(std::string_view option, const char* text, int lo, int hi) {
   char* end = nullptr;
   const long n = std::strtol(text, &end, 10);
   if (end == text || *end != '\0' || n < lo || n > hi)
-    throw std::invalid_argument("panek_kalker: " + std::string(option) + " expects an integer in [" +
-                                std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + text + "'");
+    throw std::invalid_argument("panek_kalker: " + std::string(option) +
+                                " expects an integer in [" + std::to_string(lo) + ", " +
+                                std::to_string(hi) + "], got '" + text + "'");
   return static_cast<int>(n);
 }
 
@@ -62,13 +63,16 @@ Arguments parse(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view a = argv[i];
     if ((a == "--speeds" || a == "--terms") && i + 1 < argc) {
-      if (a == "--speeds") args.speeds = parse_count(a, argv[++i], 2, 100000);
-      else args.terms = parse_count(a, argv[++i], 1, 64);
+      if (a == "--speeds")
+        args.speeds = parse_count(a, argv[++i], 2, 100000);
+      else
+        args.terms = parse_count(a, argv[++i], 1, 64);
     } else if (!a.starts_with("--") && !have_dir) {
       args.dir = a;
       have_dir = true;
     } else {
-      throw std::invalid_argument("usage: panek_kalker [output-directory] [--speeds N] [--terms N]");
+      throw std::invalid_argument(
+          "usage: panek_kalker [output-directory] [--speeds N] [--terms N]");
     }
   }
   return args;
@@ -111,39 +115,44 @@ int main(int argc, char** argv) {
   int failures = 0;
   double a0 = 1, l0 = 5, d0 = 0;
   const auto sweep_start = std::chrono::steady_clock::now();
-  std::printf("%12s %10s %10s %10s %12s %11s %5s %4s %8s %9s\n", "Vtau/a0", "a(0)/a0", "b(0)/a0", "l/l0",
-              "d/(C1a0^2)", "chi", "conv", "it", "s", "residual");
+  std::printf("%12s %10s %10s %10s %12s %11s %5s %4s %8s %9s\n", "Vtau/a0", "a(0)/a0", "b(0)/a0",
+              "l/l0", "d/(C1a0^2)", "chi", "conv", "it", "s", "residual");
   for (int i = 0; i < args.speeds; ++i) {
     const double vtau = std::pow(10.0, -3 + 6.0 * i / (args.speeds - 1));
     const auto t0 = std::chrono::steady_clock::now();
     Solution s = solve(vtau, seed());
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     a0 = s.a_long_term;
     l0 = s.l_long_term;
     d0 = s.d_long_term;
     const double d_scaled = s.d / (c1 * a0 * a0);
-    sweep << vtau << ',' << s.a(0.0) / a0 << ',' << s.b(0.0) / a0 << ',' << s.l() / l0 << ',' << d_scaled << ','
-          << s.chi << ',' << (s.converged ? 1 : 0) << ',' << s.iterations << ',' << seconds << ',';
+    sweep << vtau << ',' << s.a(0.0) / a0 << ',' << s.b(0.0) / a0 << ',' << s.l() / l0 << ','
+          << d_scaled << ',' << s.chi << ',' << (s.converged ? 1 : 0) << ',' << s.iterations << ','
+          << seconds << ',';
     if (std::isfinite(s.residual)) sweep << s.residual;
     sweep << ',' << (s.root ? 1 : 0) << '\n';
     std::printf("%12.5g %10.6f %10.6f %10.6f %12.8f %11.8f %5s %4d %8.3f %9.2g%s%s\n", vtau,
                 s.a(0.0) / a0, s.b(0.0) / a0, s.l() / l0, d_scaled, s.chi,
-                s.converged ? "yes" : "NO", s.iterations, seconds, s.residual,
-                s.root ? "" : "  ", s.root ? "" : s.reason.c_str());
+                s.converged ? "yes" : "NO", s.iterations, seconds, s.residual, s.root ? "" : "  ",
+                s.root ? "" : s.reason.c_str());
     if (!s.converged) ++failures;
     speeds.push_back(vtau);
     solutions.push_back(s);
     last = std::move(s);
   }
-  const double sweep_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
-  std::printf("sweep: %d speeds, terms = %d, %.1f s, %d not converged\n", args.speeds, args.terms, sweep_seconds,
-              failures);
+  const double sweep_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
+  std::printf("sweep: %d speeds, terms = %d, %.1f s, %d not converged\n", args.speeds, args.terms,
+              sweep_seconds, failures);
   const double glassy = std::pow(1 + f, -1.0 / 3);
-  std::printf("static (V tau = 0): a0 = %.12g, l0 = %.12g (l0/a0 = %.6g), d0/(C1 a0^2) = %.10g\n", a0, l0, l0 / a0,
-              d0 / (c1 * a0 * a0));
-  std::printf("glassy limits (V tau -> inf): a(0)/a0 = l/l0 = (1+f)^(-1/3) = %.6f, d/d0 = (1+f)^(-2/3) = %.6f, "
-              "d/(C1 a0^2) = %.8f\n",
-              glassy, glassy * glassy, glassy * glassy * d0 / (c1 * a0 * a0));
+  std::printf("static (V tau = 0): a0 = %.12g, l0 = %.12g (l0/a0 = %.6g), d0/(C1 a0^2) = %.10g\n",
+              a0, l0, l0 / a0, d0 / (c1 * a0 * a0));
+  std::printf(
+      "glassy limits (V tau -> inf): a(0)/a0 = l/l0 = (1+f)^(-1/3) = %.6f, d/d0 = (1+f)^(-2/3) = "
+      "%.6f, "
+      "d/(C1 a0^2) = %.8f\n",
+      glassy, glassy * glassy, glassy * glassy * d0 / (c1 * a0 * a0));
 
   // Fig. 5 and 6: the zones and the pressure on y = 0 at a few speeds, each seeded with the
   // converged sweep solution nearest below it (reused when the speed is on the sweep's grid).
@@ -182,8 +191,10 @@ int main(int argc, char** argv) {
       pressure << vtau << ',' << (x - b) / a << ',' << p / peak.pressure << ',' << x / a0 << ','
                << p * a0 * a0 / load << '\n';
     }
-    std::printf("V tau/a0 = %-6g a(0)/a0 = %.6f  b(0)/a0 = %+.6f  l/l0 = %.6f  pmax a0^2/P = %.6f at xi = %+.4f\n",
-                vtau, a / a0, b / a0, s->l() / l0, peak.pressure * a0 * a0 / load, (peak.x - b) / a);
+    std::printf(
+        "V tau/a0 = %-6g a(0)/a0 = %.6f  b(0)/a0 = %+.6f  l/l0 = %.6f  pmax a0^2/P = %.6f at xi = "
+        "%+.4f\n",
+        vtau, a / a0, b / a0, s->l() / l0, peak.pressure * a0 * a0 / load, (peak.x - b) / a);
   }
   std::cout << "panek_kalker: wrote " << (args.dir / "panek_kalker_sweep.csv").string() << ", "
             << (args.dir / "panek_kalker_zones.csv").string() << ", "

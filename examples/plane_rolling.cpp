@@ -17,11 +17,13 @@ int main(int argc, char** argv) {
   // mu_D chosen so that a0^2 = 4 c (1 + f) W / C1 = 1 with nu = 0.5, W = C1 = 1.
   auto solve = [&](double f, double vtau) {
     const double mu_d = 4 * (1 + f) * 0.5 / (2 * pi);
-    const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(mu_d, 0.5, f, vtau));
+    const viscoroll::PlaneSolverD solver(
+        viscoroll::StandardLinearSolid<double>(mu_d, 0.5, f, vtau));
     return solver.solve({.c1 = 1.0, .load = 1.0, .speed = 1.0});
   };
   std::ofstream sweep(dir / "plane_sweep.csv");
-  sweep << "vtau_over_a0,f,a_over_a0,b_over_a0,chi_over_c1a0,pmax_a0_over_w,pmax_x_over_a0,converged\n";
+  sweep << "vtau_over_a0,f,a_over_a0,b_over_a0,chi_over_c1a0,pmax_a0_over_w,pmax_x_over_a0,"
+           "converged\n";
   sweep.precision(12);
   bool ok = true;
   for (double f : {1.0, 9.0})
@@ -30,8 +32,8 @@ int main(int argc, char** argv) {
       const auto s = solve(f, vtau);
       const auto peak = s.peak();
       ok = ok && s.converged;
-      sweep << vtau << ',' << f << ',' << s.a << ',' << s.b << ',' << s.chi << ',' << peak.pressure << ','
-            << peak.x << ',' << s.converged << '\n';
+      sweep << vtau << ',' << f << ',' << s.a << ',' << s.b << ',' << s.chi << ',' << peak.pressure
+            << ',' << peak.x << ',' << s.converged << '\n';
     }
   std::ofstream profile(dir / "plane_pressure.csv");
   profile << "vtau_over_a0,x_over_a0,p_a0_over_w\n";
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
     }
   }
   std::cout << "plane_rolling: wrote " << (dir / "plane_sweep.csv").string() << " and "
-            << (dir / "plane_pressure.csv").string() << (ok ? "" : " (some solutions did not converge)") << "\n";
+            << (dir / "plane_pressure.csv").string()
+            << (ok ? "" : " (some solutions did not converge)") << "\n";
   return ok ? 0 : 1;
 }

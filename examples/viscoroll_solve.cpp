@@ -475,8 +475,9 @@ viscoroll::LineOptions line_options(const SolveOptions& o, viscoroll::cli::LineS
 
 Problem from_options(const SolveOptions& o) {
   const auto setting = o.setting.value_or(viscoroll::cli::LineSetting::standard);
-  Problem p{*o.method, o.mu_d,   o.nu,   o.f,       o.tau, o.c1, o.c2,
-            o.load,    o.speeds, o.grid, o.threads, {},    {},   {}, line_options(o, setting),
+  Problem p{*o.method, o.mu_d, o.nu,   o.f,      o.tau,
+            o.c1,      o.c2,   o.load, o.speeds, o.grid,
+            o.threads, {},     {},     {},       line_options(o, setting),
             {}};
   p.fast = setting == viscoroll::cli::LineSetting::fast;
   return p;
@@ -809,8 +810,7 @@ int run_line(const Problem& p, Output& out) {
   const auto run_single_on = [&](auto scene_at, auto tag) {
     using Solver = typename decltype(tag)::type;
     return run_sweeps(
-        p, p.tau, out, scene_at,
-        [&](double tau) { return Solver(material(p, tau), options); },
+        p, p.tau, out, scene_at, [&](double tau) { return Solver(material(p, tau), options); },
         [&](double tau, const auto& scene, const auto& s, double seconds) {
           const auto peak = s.strip(0.0).peak();
           Record r = {{"method", std::string("line")},
@@ -1007,12 +1007,12 @@ int main(int argc, char** argv) {
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     const Problem problem = options.scene.empty() ? from_options(options) : from_scene(options);
     if (problem.method != Method::line)
-      for (const auto& [given, key] : {std::pair{bool(options.oversampling), "--oversampling"},
-                                       std::pair{!options.basis.empty(), "--basis"},
-                                       std::pair{bool(options.max_iterations), "--max-iterations"},
-                                       std::pair{bool(options.quadrature_tolerance),
-                                                 "--quadrature-tolerance"},
-                                       std::pair{options.setting.has_value(), "--setting"}})
+      for (const auto& [given, key] :
+           {std::pair{bool(options.oversampling), "--oversampling"},
+            std::pair{!options.basis.empty(), "--basis"},
+            std::pair{bool(options.max_iterations), "--max-iterations"},
+            std::pair{bool(options.quadrature_tolerance), "--quadrature-tolerance"},
+            std::pair{options.setting.has_value(), "--setting"}})
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");

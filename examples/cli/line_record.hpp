@@ -64,14 +64,11 @@ Record line_fields(const Solution& s, const Record& middle, int terms, double se
                         {"chi", s.chi}};
   out.insert(out.end(), shape.begin(), shape.end());
   out.insert(out.end(), middle.begin(), middle.end());
-  const Record tail = {{"seconds", seconds},
-                       {"converged", s.converged},
-                       {"root", s.root},
-                       {"iterations", static_cast<long long>(s.iterations)},
-                       {"residual", s.residual},
-                       {"terms", static_cast<long long>(terms)},
-                       {"reason", s.reason},
-                       {"warnings", s.warnings}};
+  const Record tail = {
+      {"seconds", seconds},     {"converged", s.converged},
+      {"root", s.root},         {"iterations", static_cast<long long>(s.iterations)},
+      {"residual", s.residual}, {"terms", static_cast<long long>(terms)},
+      {"reason", s.reason},     {"warnings", s.warnings}};
   out.insert(out.end(), tail.begin(), tail.end());
   return out;
 }

@@ -598,11 +598,10 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   } catch (const json::exception& e) {
     throw std::invalid_argument("viscoroll-solve: " + source + ": not valid JSON: " + message(e));
   }
-  const ObjectReader top(
-      source, root, "",
-      {"description", "material", "roller", "load", "speeds", "method", "grid", "setting",
-       "temperature"},
-      "the scene");
+  const ObjectReader top(source, root, "",
+                         {"description", "material", "roller", "load", "speeds", "method", "grid",
+                          "setting", "temperature"},
+                         "the scene");
   Scene scene;
   if (top.has("description")) scene.description = top.string("description");
   scene.material = scene_detail::read_by_kind<MaterialModel>(top, "material", "model",

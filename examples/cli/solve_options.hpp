@@ -65,8 +65,8 @@ struct SolveOptions {
   std::optional<long> grid;    ///< discretisation size (line: terms; bem: elements per semi-axis)
   std::string scene;           ///< --scene FILE: the material, the roller, the load and speeds
   Format format = Format::json;
-  std::string csv;       ///< --csv FILE: the sweep as CSV too (empty: none)
-  std::string plot;      ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
+  std::string csv;   ///< --csv FILE: the sweep as CSV too (empty: none)
+  std::string plot;  ///< --plot DIR: sweep.csv, sweep.gp and sweep.png there (empty: none)
   /// --profile-out FILE.csv: the contact along the roller of every line or bem solve (empty:
   /// none)
   std::string profile_out;
@@ -128,11 +128,28 @@ inline std::vector<double> parse_numbers(std::string_view option, std::string_vi
 /// malformed options. Physical ranges are checked later by the library (or the scene reader),
 /// which names the parameter.
 inline SolveOptions parse_solve_options(const std::vector<std::string_view>& args) {
-  static const std::set<std::string_view> known = {
-      "--method", "--mu-d", "--nu",      "--f",          "--tau",   "--speed",
-      "--c1",     "--c2",   "--load",    "--grid",       "--scene", "--format",
-      "--csv",    "--plot", "--threads", "--temperature", "--oversampling", "--basis",
-      "--max-iterations", "--profile-out", "--quadrature-tolerance", "--setting"};
+  static const std::set<std::string_view> known = {"--method",
+                                                   "--mu-d",
+                                                   "--nu",
+                                                   "--f",
+                                                   "--tau",
+                                                   "--speed",
+                                                   "--c1",
+                                                   "--c2",
+                                                   "--load",
+                                                   "--grid",
+                                                   "--scene",
+                                                   "--format",
+                                                   "--csv",
+                                                   "--plot",
+                                                   "--threads",
+                                                   "--temperature",
+                                                   "--oversampling",
+                                                   "--basis",
+                                                   "--max-iterations",
+                                                   "--profile-out",
+                                                   "--quadrature-tolerance",
+                                                   "--setting"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -229,7 +246,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     if (!(tol >= 0 && tol <= 1e-4))
       throw std::invalid_argument(
           "viscoroll-solve: --quadrature-tolerance expects 0 <= TOL <= 1e-4 (0: every integral "
-          "to rounding), got '" + std::string(given["--quadrature-tolerance"]) + "'");
+          "to rounding), got '" +
+          std::string(given["--quadrature-tolerance"]) + "'");
     o.quadrature_tolerance = tol;
   }
   if (given.count("--basis")) {

@@ -9,9 +9,9 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/errors.hpp>
 #include <viscoroll/core/strip.hpp>
+#include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/material/elastic.hpp>
 #include <viscoroll/material/standard_linear_solid.hpp>
-#include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/adaptive.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -14,7 +15,6 @@
 #include <string>
 #include <utility>
 #include <variant>
-#include <limits>
 #include <vector>
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/material/temperature_shift.hpp>
@@ -201,10 +201,9 @@ SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, con
   if (start) {
     const auto* same = dynamic_cast<const SolvedT*>(start);
     if (!same)
-      throw std::invalid_argument(std::string("viscoroll: start must be a result of the ") +
-                                  method_name(method) +
-                                  " method for this kind of material and setting, got " +
-                                  method_name(start->method()));
+      throw std::invalid_argument(
+          std::string("viscoroll: start must be a result of the ") + method_name(method) +
+          " method for this kind of material and setting, got " + method_name(start->method()));
     seed = &same->solution();
   }
   const auto t0 = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -17,7 +18,6 @@
 #include <utility>
 #include <variant>
 #include <vector>
-#include <filesystem>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/line_options.hpp>
 #include <viscoroll/material/dma_fit.hpp>
@@ -511,7 +511,8 @@ std::string shift_repr(const ShiftLaw<double>& law) {
 std::string material_repr(const MaterialSpec& m) {
   if (m.prony) {
     const auto& r = m.prony->reference;
-    std::string out = "Prony(g_inf=" + shortest(r.g_inf()) + ", nu=" + shortest(r.nu()) + ", terms=[";
+    std::string out =
+        "Prony(g_inf=" + shortest(r.g_inf()) + ", nu=" + shortest(r.nu()) + ", terms=[";
     for (std::size_t i = 0; i < r.terms().size(); ++i)
       out += (i ? ", (" : "(") + shortest(r.terms()[i].g) + ", " + shortest(r.terms()[i].rho) + ")";
     out += "]";
@@ -1062,8 +1063,8 @@ PYBIND11_MODULE(_viscoroll, m) {
         return Result{std::move(solved)};
       },
       py::arg("scene"), py::arg("method") = py::none(), py::arg("grid") = py::none(),
-      py::arg("speed") = py::none(), py::arg("start") = py::none(),
-      py::arg("setting") = py::none(), solve_doc);
+      py::arg("speed") = py::none(), py::arg("start") = py::none(), py::arg("setting") = py::none(),
+      solve_doc);
 
   m.def(
       "sweep",

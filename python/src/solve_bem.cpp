@@ -1,5 +1,6 @@
 // viscoroll's Python module: the boundary-element solver behind solve_bem and sweep_bem, over the
-// standard linear solid (BemSolverD) or a Prony series (BemSolver over PronyRelaxation). The fields are those of viscoroll-solve --method bem (examples/viscoroll_solve.cpp).
+// standard linear solid (BemSolverD) or a Prony series (BemSolver over PronyRelaxation). The fields
+// are those of viscoroll-solve --method bem (examples/viscoroll_solve.cpp).
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
@@ -26,29 +27,30 @@ class BemSolved final : public Solved {
     const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s_.grid.nx));
     const double pmax = s_.pressure.empty() ? 0.0 : s_.pressure[peak];
     const auto along = s_.along_roller();
-    record_ = joined(keys.head("bem", speed), {{"a0", s_.a0},
-               {"b0", s_.b0},
-               {"l", s_.l},
-               {"y_minus", -s_.l},
-               {"y_plus", s_.l},
-               {"f0_max", along.f0_max},
-               {"f0_max_y", along.f0_max_y},
-               {"d", s_.d},
-               {"a_long_term", s_.long_term.a},
-               {"l0", s_.long_term.b},
-               {"d0", s_.long_term.d},
-               {"chi", s_.chi},
-               {"pmax", pmax},
-               {"pmax_x", s_.grid.x(peak_i)},
-               {"seconds", seconds},
-               {"converged", s_.converged},
-               {"iterations", static_cast<long long>(s_.iterations)},
-               {"gmres_iterations", static_cast<long long>(s_.krylov_iterations)},
-               {"residual", s_.residual},
-               {"grid", static_cast<long long>(grid)},
-               {"cells", static_cast<long long>(s_.grid.size())},
-               {"reason", s_.reason},
-               {"warnings", s_.warnings}});
+    record_ = joined(keys.head("bem", speed),
+                     {{"a0", s_.a0},
+                      {"b0", s_.b0},
+                      {"l", s_.l},
+                      {"y_minus", -s_.l},
+                      {"y_plus", s_.l},
+                      {"f0_max", along.f0_max},
+                      {"f0_max_y", along.f0_max_y},
+                      {"d", s_.d},
+                      {"a_long_term", s_.long_term.a},
+                      {"l0", s_.long_term.b},
+                      {"d0", s_.long_term.d},
+                      {"chi", s_.chi},
+                      {"pmax", pmax},
+                      {"pmax_x", s_.grid.x(peak_i)},
+                      {"seconds", seconds},
+                      {"converged", s_.converged},
+                      {"iterations", static_cast<long long>(s_.iterations)},
+                      {"gmres_iterations", static_cast<long long>(s_.krylov_iterations)},
+                      {"residual", s_.residual},
+                      {"grid", static_cast<long long>(grid)},
+                      {"cells", static_cast<long long>(s_.grid.size())},
+                      {"reason", s_.reason},
+                      {"warnings", s_.warnings}});
   }
 
   const Solution& solution() const { return s_; }
@@ -127,8 +129,8 @@ std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double>
   for (const double v : speeds) bem_scene(scene, v);  // every speed checked before any work
   const auto keys = MaterialKeys::of(scene);
   if (scene.material.prony)
-    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid), bem_scene(scene, 0.0),
-                                   speeds, keys, grid, options);
+    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid), bem_scene(scene, 0.0), speeds,
+                                   keys, grid, options);
   return sweep_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, 0.0), speeds, keys,
                                  grid, options);
 }

@@ -1,8 +1,9 @@
 // viscoroll's Python module: the line-contact solver behind solve_line and sweep_line, over the
-// standard linear solid (LineSolverD; FastLineSolverD in the fast setting) or a Prony series (LineSolver over PronyRelaxation, the
-// line theory for a spectrum), for the ellipsoid (LineScene) or a scene file's roller of finite
-// length (LineProfileScene, tilted or not; on a spectrum docs/theory.md (RP5)). The fields
-// are those of viscoroll-solve --method line (examples/viscoroll_solve.cpp).
+// standard linear solid (LineSolverD; FastLineSolverD in the fast setting) or a Prony series
+// (LineSolver over PronyRelaxation, the line theory for a spectrum), for the ellipsoid (LineScene)
+// or a scene file's roller of finite length (LineProfileScene, tilted or not; on a spectrum
+// docs/theory.md (RP5)). The fields are those of viscoroll-solve --method line
+// (examples/viscoroll_solve.cpp).
 #include <stdexcept>
 #include <utility>
 #include <viscoroll/line/line_solver.hpp>
@@ -45,8 +46,7 @@ class LineSolved final : public Solved {
 class LineSpectrumSolved final : public Solved {
  public:
   using Solution = SpectrumSolver::Solution;
-  LineSpectrumSolved(Solution s, const MaterialKeys& keys, double speed, int terms,
-                     double seconds)
+  LineSpectrumSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
     record_ = joined(
         keys.head("line", speed),
@@ -121,10 +121,9 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
       return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast),
                                               scene_at(speed), Method::line, start, keys, terms);
     if (fast)
-      return solve_seeded<LineSolved<FastLineSolverD>>(make_solver<FastLineSolverD>(scene, terms,
-                                                                                   fast),
-                                                       scene_at(speed), Method::line, start, keys,
-                                                       terms);
+      return solve_seeded<LineSolved<FastLineSolverD>>(
+          make_solver<FastLineSolverD>(scene, terms, fast), scene_at(speed), Method::line, start,
+          keys, terms);
     return solve_seeded<LineSolved<LineSolverD>>(make_solver<LineSolverD>(scene, terms, fast),
                                                  scene_at(speed), Method::line, start, keys, terms);
   };

@@ -120,8 +120,7 @@ TEST_CASE("bem profile: a tilt mirrors with theta -> -theta and shifts the conta
   CHECK(-p.y_minus > p.y_plus);
 }
 
-TEST_CASE("bem profile: a barrel (L_f = 0) is the ellipsoid C2 = 1/R_c to O((l/R_c)^2)",
-          "[bem]") {
+TEST_CASE("bem profile: a barrel (L_f = 0) is the ellipsoid C2 = 1/R_c to O((l/R_c)^2)", "[bem]") {
   // h = y^2/(2 R_c) (1 + y^2/(4 R_c^2) + ...): on the same grid the two gaps differ by at most
   // l^2/(4 R_c^2) of the drop, l the contact's half length, and so do d, chi, a(0).
   const double rc = 400.0, load = 5.0, speed = 1.0;

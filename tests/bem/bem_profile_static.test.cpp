@@ -31,14 +31,15 @@ void check_static_crowned(double flat_length) {
                      .solve(viscoroll::bem_scene(roller, elastic, load, 0.0));
   REQUIRE(s.converged);
   const auto along = s.along_roller();
-  const auto centre = static_cast<std::size_t>(
-      std::find(along.y.begin(), along.y.end(), 0.0) - along.y.begin());
+  const auto centre =
+      static_cast<std::size_t>(std::find(along.y.begin(), along.y.end(), 0.0) - along.y.begin());
   REQUIRE(centre < along.y.size());
   // The line theory's F0 is c times the load per length (Eq. 47: int F0 dy = c P).
   const double f0_centre = c * along.f0[centre];
   double line_peak = 0;
   for (int k = 0; k <= 2000; ++k)
-    line_peak = std::max(line_peak, line.f0(line.y_minus + (line.y_plus - line.y_minus) * k / 2000));
+    line_peak =
+        std::max(line_peak, line.f0(line.y_minus + (line.y_plus - line.y_minus) * k / 2000));
   INFO("L_f = " << flat_length << ": d " << line.d << " / " << s.d << ", y+ " << line.y_plus
                 << " / " << along.y_plus << ", F0(0) " << line.f0(0.0) << " / " << f0_centre
                 << ", peak ratio " << line_peak / line.f0(0.0) << " / "

@@ -57,12 +57,14 @@ TEST_CASE("cli line profile: the line method's checks of a roller of finite leng
       R"("material": {"model": "prony", "nu": 0.5, "g_inf": 4e5, "terms": [{"g": 1.6e6, "tau": 0.005}]})";
   const std::string table = R"("roller": {"profile": "table", "radius": 0.05,
       "y": [-0.08, -0.04, 0, 0.04, 0.08], "h": [3e-3, 4e-4, 0, 4e-4, )";
-  CHECK_NOTHROW(cli::check_scene_for_method(scene(sls, crowned + "}"), cli::Method::line, "s.json"));
+  CHECK_NOTHROW(
+      cli::check_scene_for_method(scene(sls, crowned + "}"), cli::Method::line, "s.json"));
   CHECK_NOTHROW(
       cli::check_scene_for_method(scene(sls, table + "3e-3]}"), cli::Method::line, "s.json"));
   CHECK_NOTHROW(cli::check_scene_for_method(scene(sls, crowned + ", \"tilt\": 0.01}"),
                                             cli::Method::bem, "s.json"));
-  CHECK_NOTHROW(cli::check_scene_for_method(scene(prony, crowned + "}"), cli::Method::bem, "s.json"));
+  CHECK_NOTHROW(
+      cli::check_scene_for_method(scene(prony, crowned + "}"), cli::Method::bem, "s.json"));
   CHECK_NOTHROW(
       cli::check_scene_for_method(scene(prony, crowned + "}"), cli::Method::line, "s.json"));
   // A tilt or an asymmetric table: the asymmetric contact (docs/theory.md (RP7)), on any material.

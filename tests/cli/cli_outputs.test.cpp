@@ -145,11 +145,16 @@ TEST_CASE("cli: the line method's slow-regime options are passed and validated",
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   // The slow-regime scene (V tau ~ 0.01 a0): the least-squares fit over twice the points
   // in the mapped variable (docs/line-solver.md, "Oversampling") converges and satisfies the load.
-  const std::vector<std::string> scene = {
-      "--method", "line", "--mu-d", "0.8039135086325981", "--nu", "0.30003219277831694",
-      "--f", "2.785164659360882", "--speed", "0.23336242599102316", "--c1", "20.762562182128647",
-      "--load", "23.306722647201934", "--c2", "0.681408522179955", "--tau",
-      "0.004466981994343957", "--grid", "6"};
+  const std::vector<std::string> scene = {"--method", "line",
+                                          "--mu-d",   "0.8039135086325981",
+                                          "--nu",     "0.30003219277831694",
+                                          "--f",      "2.785164659360882",
+                                          "--speed",  "0.23336242599102316",
+                                          "--c1",     "20.762562182128647",
+                                          "--load",   "23.306722647201934",
+                                          "--c2",     "0.681408522179955",
+                                          "--tau",    "0.004466981994343957",
+                                          "--grid",   "6"};
   std::vector<std::string> args = scene;
   for (const char* extra : {"--oversampling", "2", "--basis", "mapped", "--max-iterations", "1000"})
     args.push_back(extra);
@@ -169,11 +174,12 @@ TEST_CASE("cli: the line method's slow-regime options are passed and validated",
     std::vector<std::string> extra;
     std::string message;
   };
-  for (const Bad& b : std::vector<Bad>{{{"--oversampling", "9"}, "--oversampling"},
-                                       {{"--basis", "chebyshev"}, "--basis"},
-                                       {{"--max-iterations", "0"}, "--max-iterations"},
-                                       {{"--quadrature-tolerance", "1e-3"}, "--quadrature-tolerance"},
-                                       {{"--quadrature-tolerance", "-1"}, "--quadrature-tolerance"}}) {
+  for (const Bad& b :
+       std::vector<Bad>{{{"--oversampling", "9"}, "--oversampling"},
+                        {{"--basis", "chebyshev"}, "--basis"},
+                        {{"--max-iterations", "0"}, "--max-iterations"},
+                        {{"--quadrature-tolerance", "1e-3"}, "--quadrature-tolerance"},
+                        {{"--quadrature-tolerance", "-1"}, "--quadrature-tolerance"}}) {
     std::vector<std::string> bad = scene;
     bad.insert(bad.end(), b.extra.begin(), b.extra.end());
     const Run e = run(bad);
@@ -193,10 +199,9 @@ TEST_CASE("cli: the line method's quadrature tolerance", "[cli][line]") {
   // Integrals to 1e-8 instead of rounding: the same contact to the bound of docs/performance.md
   // ("The fast setting": 1e-12 on the paper's scene; 1e-10 allows a hundredfold), a different
   // computation (the digits are not all equal).
-  const std::vector<std::string> scene = {"--method", "line", "--mu-d", "1", "--nu", "0.5",
-                                          "--f", "9", "--tau", "1", "--speed", "0.3,3",
-                                          "--c1", "1", "--c2", "0.0798", "--load", "1",
-                                          "--grid", "4"};
+  const std::vector<std::string> scene = {
+      "--method", "line",  "--mu-d", "1", "--nu", "0.5",    "--f",    "9", "--tau",  "1",
+      "--speed",  "0.3,3", "--c1",   "1", "--c2", "0.0798", "--load", "1", "--grid", "4"};
   std::vector<std::string> args = scene;
   for (const char* extra : {"--quadrature-tolerance", "1e-8"}) args.push_back(extra);
   const auto exact = json_lines(run(scene).out);

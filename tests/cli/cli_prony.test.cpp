@@ -1,9 +1,10 @@
 // viscoroll-solve with a material of model "prony" (a Prony series in relaxation form, issue 20
 // item 6): the shipped prony scenes run with the bem method, and the plane and line methods solve a
-// spectrum; one term equals the standard linear solid of the same relaxation form; a temperature is the reference material with every time
-// multiplied by a_T; one line per (temperature, speed); --temperature overrides the scene's; a
-// DMA file is fitted with its report (and a poor fit's warning) on stderr; malformed prony keys,
-// temperatures and methods exit 2 naming the key, nothing on stdout.
+// spectrum; one term equals the standard linear solid of the same relaxation form; a temperature is
+// the reference material with every time multiplied by a_T; one line per (temperature, speed);
+// --temperature overrides the scene's; a DMA file is fitted with its report (and a poor fit's
+// warning) on stderr; malformed prony keys, temperatures and methods exit 2 naming the key, nothing
+// on stdout.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -72,7 +73,8 @@ void check_same(json a, json b, double tolerance, const std::vector<std::string>
 /// `speeds` each.
 using Lines = decltype(json_lines(std::string()));
 
-std::pair<Lines, Lines> one_term_and_its_solid(const fs::path& dir, json scene, std::size_t speeds) {
+std::pair<Lines, Lines> one_term_and_its_solid(const fs::path& dir, json scene,
+                                               std::size_t speeds) {
   const double mu_d = 3e6, f = 9, tau = 0.01;
   const viscoroll::PronyRelaxation<double> relaxation(mu_d / (1 + f), 0.5,
                                                       {{mu_d * f / (1 + f), tau / (1 + f)}});
@@ -245,8 +247,9 @@ TEST_CASE("cli prony: one term equals the standard linear solid of the same rela
   }
 }
 
-TEST_CASE("cli prony: the plane method solves a spectrum; one term equals the standard linear solid",
-          "[cli][prony][plane]") {
+TEST_CASE(
+    "cli prony: the plane method solves a spectrum; one term equals the standard linear solid",
+    "[cli][prony][plane]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   const TempDir dir("viscoroll_cli_prony_plane");
   json scene = prony_scene();

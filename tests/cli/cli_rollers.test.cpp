@@ -26,7 +26,8 @@ std::string crowned_scene(const fs::path& dir, const std::string& name, const st
   std::ofstream(path) << R"({"material": {"model": "standard_linear_solid", "mu_d": 2e6, "nu": 0.5,
       "f": 4, "tau": 0.005},
     "roller": {"profile": "crowned", "radius": 0.05, "flat_length": 0.03, "crown_radius": 0.1,
-      "tilt": )" << tilt << R"(},
+      "tilt": )" << tilt
+                      << R"(},
     "load": 50, "speeds": [0.5], "method": "bem", "grid": 6})";
   return path.string();
 }
@@ -38,8 +39,8 @@ TEST_CASE("cli rollers: the crowned roller runs, --profile-out carries the load 
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   const TempDir dir("viscoroll_cli_rollers");
   const fs::path csv = dir.path() / "along.csv";
-  const Run r = run({"--scene", (scenes_dir() / "crowned_roller.json").string(), "--profile-out",
-                     csv.string()});
+  const Run r = run(
+      {"--scene", (scenes_dir() / "crowned_roller.json").string(), "--profile-out", csv.string()});
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   const auto lines = json_lines(r.out);

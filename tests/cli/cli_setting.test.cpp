@@ -39,8 +39,8 @@ TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels",
   const auto at = paper.scene(0.0);
   const std::vector<double> speeds = {0.01, 1.0, 100.0};
   const std::vector<std::string> scene = {
-      "--method", "line", "--mu-d", "1",   "--nu",   "0.5",           "--f",     "9",
-      "--tau",    "1",    "--c1",   "1",   "--c2",   digits17(at.c2), "--load",  digits17(at.load),
+      "--method", "line",      "--mu-d", "1", "--nu", "0.5",           "--f",    "9",
+      "--tau",    "1",         "--c1",   "1", "--c2", digits17(at.c2), "--load", digits17(at.load),
       "--speed",  "0.01,1,100"};
   std::vector<std::string> args = scene;
   for (const char* extra : {"--setting", "fast"}) args.push_back(extra);
@@ -101,7 +101,8 @@ TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels",
   CHECK(plane.err.find("--setting is valid only with --method line") != std::string::npos);
 }
 
-TEST_CASE("cli: a scene file's setting is the line method's, --setting replaces it", "[cli][line]") {
+TEST_CASE("cli: a scene file's setting is the line method's, --setting replaces it",
+          "[cli][line]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   // paper.json with "setting": "fast": the same lines as paper.json with --setting fast (the
   // file's grid 6 kept); --setting default over it: paper.json's own lines; the bem method

@@ -52,7 +52,8 @@ void check_scene(const viscoroll::cli::Scene& s) {
     std::visit(
         [&](const auto& r) {
           using R = std::decay_t<decltype(r)>;
-          if constexpr (!std::is_same_v<R, EllipsoidProfile> && !std::is_same_v<R, CylinderProfile>) {
+          if constexpr (!std::is_same_v<R, EllipsoidProfile> &&
+                        !std::is_same_v<R, CylinderProfile>) {
             require(std::isfinite(r.radius) && r.radius > 0 && std::abs(r.tilt) < 0.1);
             c1 = 1 / r.radius;
             try {

@@ -9,7 +9,8 @@
 // S(x0) = -C1 x0^2/2 + c, c fixed by S - V S' = W*_in at the strip centre, W*_in the near-field
 // potential (25) of p* (again by quadrature). The algebra of docs/theory.md gives the identity
 //   residual_quad = residual_42 := C1 e^{z}{a b K1(z) - G K0(z)}
-//                    + (1/V) int_{x0}^inf e^{-(eta-x0)/V} I[Q, eta] d eta + I[F1, x0]/V - Lambda[F0]
+//                    + (1/V) int_{x0}^inf e^{-(eta-x0)/V} I[Q, eta] d eta + I[F1, x0]/V -
+//                    Lambda[F0]
 // (Eq. (42) as "right side minus left side"; only (26) is assumed), test (i). Eq. (44) follows from
 // (42) times e^{-x0/V} after the small-argument approximation I[Q, eta] ~ Lambda[Q] on (0, x0) and
 // I[F1, x0] ~ Lambda[F1]:
@@ -20,8 +21,8 @@
 #include <boost/math/constants/constants.hpp>
 #include <catch2/catch.hpp>
 #include <chrono>
-#include <iomanip>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/paper_leading_edge.hpp>
@@ -84,7 +85,8 @@ struct Contact {
       const Real w = density(ay, by, gy, phi);
       return order == 0 ? w : (by + ay * std::cos(phi)) * w;
     };
-    return Rule::integrate(integrand, Real(0), pi() / 2) + Rule::integrate(integrand, pi() / 2, pi());
+    return Rule::integrate(integrand, Real(0), pi() / 2) +
+           Rule::integrate(integrand, pi() / 2, pi());
   }
   /// -2 int p*(x') ln|x' - eta| dx' for eta = b + a + eps outside the strip (eps > 0):
   /// eta - x' = eps + 2 a sin^2(phi/2), nearly singular at phi = 0 on the scale sqrt(2 eps/a).
@@ -113,13 +115,13 @@ struct Contact {
 
 template <class Real>
 struct Residuals {
-  Real quad;       // u(x0) - S(x0) by quadrature of (38) with (26)
-  Real eq42;       // right minus left side of (42), Bessel term in closed form
-  Real eq44_l2;    // left minus right side of (44), (L2) form
-  Real eq44_lit;   // the same, literal form
-  Real delta;      // predicted e^{-x0/V} eq42 - eq44 (small-argument error)
-  Real scale;      // size of the terms of (44): |Lambda[Q]| + 2|Q| (1 + |ln V|)
-  Real scale42;    // size of the terms of (42): |Lambda[F0]| + |S(x0)|
+  Real quad;      // u(x0) - S(x0) by quadrature of (38) with (26)
+  Real eq42;      // right minus left side of (42), Bessel term in closed form
+  Real eq44_l2;   // left minus right side of (44), (L2) form
+  Real eq44_lit;  // the same, literal form
+  Real delta;     // predicted e^{-x0/V} eq42 - eq44 (small-argument error)
+  Real scale;     // size of the terms of (44): |Lambda[Q]| + 2|Q| (1 + |ln V|)
+  Real scale42;   // size of the terms of (42): |Lambda[F0]| + |S(x0)|
 };
 
 template <class Real, class Rule>
@@ -180,8 +182,8 @@ Residuals<Real> residuals(const Contact<Real>& c, Real y, bool with_quadrature) 
 // not hold: the identities are for any a, b, G).
 template <class Real>
 Contact<Real> base_contact() {
-  return Contact<Real>{Real(1), Real(0.1), Real(0.2), Real(0.02), Real(-0.3), Real(0.05), Real(2),
-                       Real(1.5)};
+  return Contact<Real>{Real(1),    Real(0.1),  Real(0.2), Real(0.02),
+                       Real(-0.3), Real(0.05), Real(2),   Real(1.5)};
 }
 
 }  // namespace
@@ -195,8 +197,8 @@ TEST_CASE("line: (42) by closed-form pieces equals quadrature of (38) with (26)"
   const Residuals<Real> r = residuals<Real, Rule>(c, y, true);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  INFO(std::setprecision(17) << "residual_quad = " << r.quad << ", residual_42 = " << r.eq42 << ", scale = " << r.scale42
-                          << ", time " << seconds << " s");
+  INFO(std::setprecision(17) << "residual_quad = " << r.quad << ", residual_42 = " << r.eq42
+                             << ", scale = " << r.scale42 << ", time " << seconds << " s");
   // Both sides are differences of terms of size scale42 = |Lambda[F0]| + |S(x0)|; each term is
   // computed to ~ 24 eps (the condition of the subtracted line integrals) and the outer
   // quadratures converge below that (checked with 32-point rules in the [slow] test), so the
@@ -218,9 +220,10 @@ TEST_CASE("line: (44) equals (42) times exp(-x0/V) up to the small-argument erro
     const Residuals<Real> r = residuals<Real, Rule>(c, Real(0.3), false);
     const Real x0 = c.a(0.3) + c.b(0.3);
     const Real e = std::exp(-x0 / c.vtau);
-    INFO(std::setprecision(17) << "shrink " << shrink << ": e^{-x0/V} res42 = " << e * r.eq42 << ", res44 (L2) = "
-                   << r.eq44_l2 << ", literal " << r.eq44_lit << ", Delta = " << r.delta
-                   << ", |Delta|/scale = " << std::abs(r.delta) / r.scale);
+    INFO(std::setprecision(17) << "shrink " << shrink << ": e^{-x0/V} res42 = " << e * r.eq42
+                               << ", res44 (L2) = " << r.eq44_l2 << ", literal " << r.eq44_lit
+                               << ", Delta = " << r.delta
+                               << ", |Delta|/scale = " << std::abs(r.delta) / r.scale);
     // The exact relation between the two, to the accuracy of the pieces (~ 24 eps scale each).
     CHECK(std::abs(e * r.eq42 - r.eq44_l2 - r.delta) <= 200 * eps * r.scale);
     // (L2) and the literal (44) agree (V/l = 0.05: (44) cancels ~ 1 digit).
@@ -233,7 +236,8 @@ TEST_CASE("line: (44) equals (42) times exp(-x0/V) up to the small-argument erro
   }
 }
 
-TEST_CASE("line: (42) against quadrature of (38), other speeds, positions and rules", "[line][slow]") {
+TEST_CASE("line: (42) against quadrature of (38), other speeds, positions and rules",
+          "[line][slow]") {
   using Real = double;
   const Real eps = std::numeric_limits<Real>::epsilon();
   // V/a0 from 0.1 (fast relaxation, thin leading-edge layer) to 10, and a strip near the end.

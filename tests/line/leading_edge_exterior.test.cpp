@@ -38,9 +38,9 @@ double assembled(double vtau, double l, double beta, double y) {
 /// Root in b(0) of (L6) at y = 0 for the static a(y).
 double root_b(double vtau, double l, double lo, double hi) {
   std::uintmax_t it = 200;
-  const auto r = boost::math::tools::toms748_solve(
-      [&](double b) { return assembled(vtau, l, b, 0.0); }, lo, hi,
-      boost::math::tools::eps_tolerance<double>(40), it);
+  const auto r =
+      boost::math::tools::toms748_solve([&](double b) { return assembled(vtau, l, b, 0.0); }, lo,
+                                        hi, boost::math::tools::eps_tolerance<double>(40), it);
   return (r.first + r.second) / 2;
 }
 
@@ -48,22 +48,27 @@ double root_b(double vtau, double l, double lo, double hi) {
 double plane_b(double vtau) {
   const auto g = [&](double b) {
     const double a = 1, z = a / vtau;
-    const double gg = a * (vtau * f / (1 + f) - b) * viscoroll::special::bessel_i1_over_i0((1 + f) * a / vtau);
-    return a * b * viscoroll::special::bessel_k1_scaled(z) - gg * viscoroll::special::bessel_k0_scaled(z);
+    const double gg =
+        a * (vtau * f / (1 + f) - b) * viscoroll::special::bessel_i1_over_i0((1 + f) * a / vtau);
+    return a * b * viscoroll::special::bessel_k1_scaled(z) -
+           gg * viscoroll::special::bessel_k0_scaled(z);
   };
   std::uintmax_t it = 200;
-  const auto r = boost::math::tools::toms748_solve(g, -vtau, vtau, boost::math::tools::eps_tolerance<double>(45), it);
+  const auto r = boost::math::tools::toms748_solve(
+      g, -vtau, vtau, boost::math::tools::eps_tolerance<double>(45), it);
   return (r.first + r.second) / 2;
 }
 
 }  // namespace
 
-TEST_CASE("line: (L6) as assembled equals Lambda[Q] - int e^-t I[Q, x0 + V t] dt by LineOperators", "[line]") {
-  // Independent route: the unintegrated form of (L6), A = Lambda[Q] - int_0^inf e^-t I[Q, x0 + V t] dt,
-  // with LineOperators' near field (24) and extended operator (41), and a t-quadrature of its own
-  // (panels [0, c], [c, 2c], ... with 24-point rules). The assembly uses the integrated-by-parts
-  // form with fused kernels; both are accurate to ~1e-13 of the terms (size ~0.1-1), so agreement to
-  // 1e-10 in the scaled residual (an error in b/a0) checks the algebra of section 4.
+TEST_CASE("line: (L6) as assembled equals Lambda[Q] - int e^-t I[Q, x0 + V t] dt by LineOperators",
+          "[line]") {
+  // Independent route: the unintegrated form of (L6), A = Lambda[Q] - int_0^inf e^-t I[Q, x0 + V t]
+  // dt, with LineOperators' near field (24) and extended operator (41), and a t-quadrature of its
+  // own (panels [0, c], [c, 2c], ... with 24-point rules). The assembly uses the
+  // integrated-by-parts form with fused kernels; both are accurate to ~1e-13 of the terms (size
+  // ~0.1-1), so agreement to 1e-10 in the scaled residual (an error in b/a0) checks the algebra of
+  // section 4.
   const double l = 5;
   using Ops = viscoroll::LineOperators<double, GaussLegendre<double, 24>>;
   const Ops ops(l);
@@ -71,7 +76,9 @@ TEST_CASE("line: (L6) as assembled equals Lambda[Q] - int e^-t I[Q, x0 + V t] dt
     for (const double y : {0.0, 2.9, 4.6}) {
       const double beta = 0.3 * vtau / (1 + vtau);
       const LineShape<double> shape{1.0, l, {0.0}, {beta}};
-      const auto q = [&](double yp) { return viscoroll::strip_functions(c1, shape.a(yp), beta, vtau, f).q; };
+      const auto q = [&](double yp) {
+        return viscoroll::strip_functions(c1, shape.a(yp), beta, vtau, f).q;
+      };
       const auto here = viscoroll::strip_functions(c1, shape.a(y), beta, vtau, f);
       const double a = here.a, x0 = a + beta;
       // int_0^inf e^-t I[Q, x0 + V t] dt on geometric panels from min(x0/V, 1)/4.
@@ -82,7 +89,8 @@ TEST_CASE("line: (L6) as assembled equals Lambda[Q] - int e^-t I[Q, x0 + V t] dt
         avg += GaussLegendre<double, 24>::integrate(
             [&](double t) { return std::exp(-t) * ops.extended(q, x0 + vtau * t, y); }, t0, 2 * t0);
       const double z = a / vtau;
-      const double k0 = viscoroll::special::bessel_k0_scaled(z), k1 = viscoroll::special::bessel_k1_scaled(z);
+      const double k0 = viscoroll::special::bessel_k0_scaled(z),
+                   k1 = viscoroll::special::bessel_k1_scaled(z);
       const double bessel = c1 * (a * beta * k1 - here.g * k0);
       const double r_i = viscoroll::special::bessel_i1_over_i0((1 + f) * a / vtau);
       const double slope = c1 * a * (k1 + r_i * k0);
@@ -120,7 +128,8 @@ TEST_CASE("line: (L6) limits at y = 0", "[line]") {
     }
     const double v = 1e-4;
     double smallest = 1e300;
-    for (double beta = -3 * v; beta <= 3 * v; beta += v / 8) smallest = std::min(smallest, assembled(v, 5, beta, 0.0));
+    for (double beta = -3 * v; beta <= 3 * v; beta += v / 8)
+      smallest = std::min(smallest, assembled(v, 5, beta, 0.0));
     CHECK(smallest > 0);  // the breakdown of the line theory's slow limit at l/a0 = 5
   }
   SECTION("glassy: C1 b V -> Lambda[Q] + 2 Q ln(2/a), Q = C1 a^2 f/4") {

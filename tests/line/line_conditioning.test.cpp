@@ -48,7 +48,8 @@ TEST_CASE("line theory: the near-field operator of (34) has the symbol 2 ln(4 e^
       const auto f = [k](double y) { return std::cos(k * y); };
       for (const double a : {0.3, 1.0}) {
         const double got = ops.near_field_strip(f, 0.0, a);
-        const double want = 2 * std::log(4 * std::exp(-gamma) / (k * a)) + 2 * ci_at_multiple_of_2pi(k * l);
+        const double want =
+            2 * std::log(4 * std::exp(-gamma) / (k * a)) + 2 * ci_at_multiple_of_2pi(k * l);
         INFO("m = " << m << ", k = " << k << ", a = " << a << ": " << got << " vs " << want);
         // The finite part of an oscillatory F over m periods by graded 24-point panels: measured
         // agreement 1e-12 or better; 1e-9 allows for the panel error at k l = 2 pi 8.
@@ -63,8 +64,11 @@ TEST_CASE("line theory: the near-field operator of (34) has the symbol 2 ln(4 e^
 TEMPLATE_TEST_CASE("line shape: re-expansion keeps a(y) and b(y)", "[line]", double, long double) {
   using Real = TestType;
   const Real eps = std::numeric_limits<Real>::epsilon();
-  const LineShape<Real> shape{Real(1), Real(4.5), {Real(-0.5), Real(0.02), Real(-0.003)},
-                              {Real(0.3), Real(-0.05), Real(0.004), Real(0.001)}, LineBasis::t_squared};
+  const LineShape<Real> shape{Real(1),
+                              Real(4.5),
+                              {Real(-0.5), Real(0.02), Real(-0.003)},
+                              {Real(0.3), Real(-0.05), Real(0.004), Real(0.001)},
+                              LineBasis::t_squared};
   // Into the same variable with more terms: the same polynomials, to rounding.
   const auto more = shape.reexpanded(LineBasis::t_squared, 7);
   REQUIRE(more.alpha.size() == 7);
@@ -131,8 +135,8 @@ TEMPLATE_TEST_CASE("line solver: self-convergence to 1e-6 at V tau = a0 in the v
     options.terms = terms[k];
     options.basis = LineBasis::s;
     const auto s =
-        viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>>(rubber, options).solve(
-            scene);
+        viscoroll::LineSolver<Real, viscoroll::StandardLinearSolid<Real>>(rubber, options)
+            .solve(scene);
     INFO("N = " << terms[k] << ": " << s.reason);
     REQUIRE(s.converged);
     values[k] = {s.a(Real(0)), s.b(Real(0)), s.l(), s.d, s.chi};
@@ -141,7 +145,8 @@ TEMPLATE_TEST_CASE("line solver: self-convergence to 1e-6 at V tau = a0 in the v
     using std::abs;
     const Real first = abs(values[1][q] / values[0][q] - 1);
     const Real last = abs(values[2][q] / values[1][q] - 1);
-    INFO("quantity " << q << ": change 16 -> 32 " << double(first) << ", 32 -> 48 " << double(last));
+    INFO("quantity " << q << ": change 16 -> 32 " << double(first) << ", 32 -> 48 "
+                     << double(last));
     CHECK(last <= Real(1e-6));
     CHECK(last <= first);
   }

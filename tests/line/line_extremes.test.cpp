@@ -49,8 +49,8 @@ bool same_bits(double x, double y) { return x == y || (std::isnan(x) && std::isn
 template <class Solution>
 void check_valid(const Solution& s) {
   REQUIRE(s.converged);
-  for (double x : {s.a(0.0), s.b(0.0), s.l(), s.d, s.chi, s.a_long_term, s.l_long_term,
-                   s.d_long_term})
+  for (double x :
+       {s.a(0.0), s.b(0.0), s.l(), s.d, s.chi, s.a_long_term, s.l_long_term, s.d_long_term})
     CHECK(std::isfinite(x));
   CHECK(s.a(0.0) > 0);
   CHECK(s.l() > 0);
@@ -62,9 +62,10 @@ void check_valid(const Solution& s) {
 
 }  // namespace
 
-TEST_CASE("line extremes: the reproductions of issue 24 are solved, bit for bit as in ordinary "
-          "units",
-          "[line][extremes]") {
+TEST_CASE(
+    "line extremes: the reproductions of issue 24 are solved, bit for bit as in ordinary "
+    "units",
+    "[line][extremes]") {
   const double two = 2;
   struct Case {
     Scene scene;
@@ -102,8 +103,8 @@ TEST_CASE("line extremes: the reproductions of issue 24 are solved, bit for bit 
   CHECK(std::abs(glassy.a(0.0) - glassy.a_long_term / std::cbrt(10.0)) <=
         8 * std::numeric_limits<double>::epsilon());
   // The static closed forms of --load 1e308 and --mu-d 1e-308 (at speed 1: V tau/a0 = 2e-103).
-  for (const Scene& s : {Scene{1, base.c1, base.c2, 1e308, 1}, Scene{1e-308, base.c1, base.c2,
-                                                                     base.load, 1}}) {
+  for (const Scene& s :
+       {Scene{1, base.c1, base.c2, 1e308, 1}, Scene{1e-308, base.c1, base.c2, base.load, 1}}) {
     const auto st = s.solve();
     check_valid(st);
     CHECK(st.reason == "static (closed form)");
@@ -136,9 +137,10 @@ TEST_CASE("line extremes: unrepresentable solutions throw naming the quantity an
   throws({1e300, 1e300, 1e300 * ratio, 1e-300, 1e-310}, "the offset b(0) = ");
 }
 
-TEST_CASE("line extremes: random scenes over the range of double end in a finite result or an "
-          "error",
-          "[line][extremes]") {
+TEST_CASE(
+    "line extremes: random scenes over the range of double end in a finite result or an "
+    "error",
+    "[line][extremes]") {
   // Inputs log-uniform over 1e-300..1e300 (c2/c1 over 1e-6..0.39, speed relative to a0 over
   // 1e-3..1e3 half the time), N = 3: a converged result has finite, positive a(0), l and d; any
   // other is not converged or an invalid_argument.
@@ -151,10 +153,10 @@ TEST_CASE("line extremes: random scenes over the range of double end in a finite
     double speed = std::pow(10.0, u(gen));
     if (i % 2 == 0) {
       try {  // near V tau = a0, where the line equations are solved
-        speed = std::pow(10.0, uv(gen)) *
-                viscoroll::static_line_contact(c1, c2, 10 * 0.5 / (2 * std::acos(-1.0) * mu_d) *
-                                                           load)
-                    .a0;
+        speed =
+            std::pow(10.0, uv(gen)) *
+            viscoroll::static_line_contact(c1, c2, 10 * 0.5 / (2 * std::acos(-1.0) * mu_d) * load)
+                .a0;
       } catch (const std::invalid_argument&) {
       }
     }

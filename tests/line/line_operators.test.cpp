@@ -37,8 +37,8 @@ Real eps() {
 // Closed form of the finite part of a monomial (derived by hand, checked with sympy):
 // (y'^n - y^n)/(y' - y) = sum_{k<n} y'^k y^(n-1-k), so
 //   FP[y'^n](y) = sum_{k=0}^{n-1} y^(n-1-k) (l^(k+1) + (-l)^(k+1) - 2 y^(k+1)) / (k + 1).
-// Examples: FP[1] = 0, FP[y'] = -2y, FP[y'^2] = l^2 - 3y^2 (so FP[1 - y'^2/l^2] = (3y^2 - l^2)/l^2),
-// FP[y'^3] = l^2 y - (11/3) y^3.
+// Examples: FP[1] = 0, FP[y'] = -2y, FP[y'^2] = l^2 - 3y^2
+// (so FP[1 - y'^2/l^2] = (3y^2 - l^2)/l^2), FP[y'^3] = l^2 y - (11/3) y^3.
 template <class Real>
 Real monomial_fp(int n, Real l, Real y) {
   Real sum = 0;
@@ -113,8 +113,7 @@ const KernelRef kernel_refs[] = {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("line: finite part against closed forms", "[line]", float, double,
-                   long double) {
+TEMPLATE_TEST_CASE("line: finite part against closed forms", "[line]", float, double, long double) {
   using Real = TestType;
   using Ops = LineOperators<Real, viscoroll::GaussLegendre<Real, 16>>;
   // Rounding of F(y') - F(y) at a node at distance s costs eps |F| / s; summed with the weights
@@ -139,8 +138,8 @@ TEMPLATE_TEST_CASE("line: finite part against closed forms", "[line]", float, do
   SECTION("degree-7 polynomial against the monomial closed form") {
     const Real l = Real(1.5);
     const Ops ops(l);
-    const Real c[] = {Real(0.5), Real(-1), Real(0.25), Real(2), Real(-0.75), Real(0.3), Real(0.1),
-                      Real(-0.05)};
+    const Real c[] = {Real(0.5),   Real(-1),  Real(0.25), Real(2),
+                      Real(-0.75), Real(0.3), Real(0.1),  Real(-0.05)};
     const auto f = [&](Real y) {
       Real v = 0;
       for (int n = 7; n >= 0; --n) v = v * y + c[n];
@@ -206,8 +205,8 @@ TEST_CASE("line: finite part converges with the rule's order and the end grading
   const double e16 = error(LineOperators<double, GaussLegendre<double, 16>>(1, coarse));
   const double e32 = error(LineOperators<double, GaussLegendre<double, 32>>(1, coarse));
   const double graded = error(LineOperators<double, GaussLegendre<double, 16>>(1));
-  INFO(std::setprecision(3) << "errors N=4,8,16,32: " << e4 << " " << e8 << " " << e16 << " "
-                            << e32 << "; N=16 with end grading " << graded);
+  INFO(std::setprecision(3) << "errors N=4,8,16,32: " << e4 << " " << e8 << " " << e16 << " " << e32
+                            << "; N=16 with end grading " << graded);
   // Geometric convergence on the last panel [d/2, d] (pole at 0.05 / (d/4) = 0.16 half-widths
   // beyond its end: Bernstein rho ~ 1.8, error ~ rho^-2N): at least a factor 5 per doubling.
   CHECK(e8 < e4 / 5);
@@ -230,9 +229,9 @@ TEMPLATE_TEST_CASE("line: extended operator (41) and its x-derivative", "[line]"
       const Real deriv = ops.extended_dx(q_profile<Real>, x, y);
       // Condition: the subtracted integrand is O(sup|Q'|) per unit length and the end terms are
       // O(|Q| ln(l/x)): rounding ~ eps (24 + 2 |ln x|) sup|Q|, sup|Q| = 1. The node y' = y +- s
-      // itself is rounded by eps |y'| / 2, which moves Q(y') by sup|Q'| eps |y'| / 2, sup|Q'| = 8/3;
-      // the kernel of I integrates to 2 ln(2l/x) against it, that of dI/dx to 2/x (the intrinsic
-      // condition of dI/dx for data sampled at rounded points).
+      // itself is rounded by eps |y'| / 2, which moves Q(y') by sup|Q'| eps |y'| / 2,
+      // sup|Q'| = 8/3; the kernel of I integrates to 2 ln(2l/x) against it, that of dI/dx to 2/x
+      // (the intrinsic condition of dI/dx for data sampled at rounded points).
       const Real condition = 24 + 2 * std::abs(std::log(x));
       const Real condition_dx = condition + Real(8) / 3 / x;
       CHECK(std::abs(value - parse<Real>(r.value)) <= 8 * eps<Real>() * condition);
@@ -291,7 +290,8 @@ TEMPLATE_TEST_CASE("line: the operators on the line residual's node set", "[line
     Real fp_condition = 0;
     for (std::size_t j = 0; j < nd.dist.size(); ++j) fp_condition += nd.weight[j] / nd.dist[j];
     const Real exact = -2 * monomial_fp(2, Real(1), y) / 3 - monomial_fp(4, Real(1), y) / 3;
-    CHECK(std::abs(finite_part(nd, dq) - exact) <= 4 * eps<Real>() * fp_condition * (1 + Real(8) / 3));
+    CHECK(std::abs(finite_part(nd, dq) - exact) <=
+          4 * eps<Real>() * fp_condition * (1 + Real(8) / 3));
   }
 }
 
@@ -362,14 +362,18 @@ TEMPLATE_TEST_CASE("line: Bessel term of (42) and (44) without overflow", "[line
     const Real term = viscoroll::leading_edge_bessel_term_scaled(c1, a, b, g, v);
     // Scaled K to a few eps; the difference a b K1 - G K0 cancels by at most a factor 20 here,
     // and e^{-(a+b)/V} carries the rounding of (a+b)/V (relative eps (a+b)/V <= eps).
-    CHECK(std::abs(lhs - parse<Real>(c.lhs44)) <= 200 * eps<Real>() * std::abs(parse<Real>(c.lhs44)));
-    CHECK(std::abs(term - parse<Real>(c.term42)) <= 200 * eps<Real>() * std::abs(parse<Real>(c.term42)));
+    CHECK(std::abs(lhs - parse<Real>(c.lhs44)) <=
+          200 * eps<Real>() * std::abs(parse<Real>(c.lhs44)));
+    CHECK(std::abs(term - parse<Real>(c.term42)) <=
+          200 * eps<Real>() * std::abs(parse<Real>(c.term42)));
   }
   // Far beyond the exponent range of e^{a/V}: finite (underflows to 0 only through e^{-(a+b)/V}).
-  const Real lhs = viscoroll::leading_edge_bessel_term(Real(1), Real(1), Real(0.1), Real(0.2), Real(1e-6));
+  const Real lhs =
+      viscoroll::leading_edge_bessel_term(Real(1), Real(1), Real(0.1), Real(0.2), Real(1e-6));
   CHECK(std::isfinite(lhs));
   CHECK(lhs == Real(0));
-  const Real term = viscoroll::leading_edge_bessel_term_scaled(Real(1), Real(1), Real(0.1), Real(0.2), Real(1e-6));
+  const Real term = viscoroll::leading_edge_bessel_term_scaled(Real(1), Real(1), Real(0.1),
+                                                               Real(0.2), Real(1e-6));
   CHECK(std::isfinite(term));
   CHECK(term != 0);
 }

@@ -37,7 +37,8 @@ double relative(double x, double y) { return std::abs(x - y) / std::abs(y); }
 
 }  // namespace
 
-TEST_CASE("line profile: the ellipsoid through the profile's path is the paper's solver", "[line]") {
+TEST_CASE("line profile: the ellipsoid through the profile's path is the paper's solver",
+          "[line]") {
   // Both converge to a root of the same equations from different cold starts: the iteration's
   // tolerance, as between seeds (line_seed.test.cpp). V tau/a0 from the slow to the fast regime,
   // the static and the glassy limit.

@@ -28,7 +28,7 @@ using viscoroll::PronyCreep;
 using viscoroll::PronyTerm;
 using viscoroll::StandardLinearSolid;
 
-using viscoroll::testing::spectrum_scene;  // the paper's proportions, load 1
+using viscoroll::testing::spectrum_scene;     // the paper's proportions, load 1
 using viscoroll::testing::twenty_term_creep;  // f_k = 0.45, tau_k = 1e-3 ... 1e3
 using viscoroll::testing::two_term_creep;     // (f, tau) = (3, 0.05), (6, 5)
 
@@ -75,7 +75,8 @@ TEST_CASE("line spectrum: one active term is the standard linear solid's solver"
   for (const double speed : {2.0, 20.0, 200.0}) {
     const auto ref = sls.solve(spectrum_scene(speed));
     for (const auto& material : {one, late}) {
-      const auto s = LineSolver<double, PronyCreep<double>>(material, options).solve(spectrum_scene(speed));
+      const auto s =
+          LineSolver<double, PronyCreep<double>>(material, options).solve(spectrum_scene(speed));
       CAPTURE(speed, material.memory_terms().size());
       REQUIRE(s.converged);
       CHECK(s.active_terms == 1);
@@ -114,9 +115,10 @@ TEST_CASE("line spectrum: a term of negligible weight changes nothing", "[line][
   }
 }
 
-TEST_CASE("line spectrum: slow and fast limits are the static contacts of the long-term and "
-          "instantaneous compliances",
-          "[line][spectrum]") {
+TEST_CASE(
+    "line spectrum: slow and fast limits are the static contacts of the long-term and "
+    "instantaneous compliances",
+    "[line][spectrum]") {
   const auto material = two_term_creep();
   const LineSolver<double, PronyCreep<double>> solver(material, LineOptions{.terms = 4});
   const double c = material.instantaneous_compliance();
@@ -201,7 +203,8 @@ void check_against_bem(const PronyCreep<double>& material, std::initializer_list
 
 }  // namespace
 
-TEST_CASE("line spectrum: agrees with the BEM within the line theory's error", "[line][spectrum][slow]") {
+TEST_CASE("line spectrum: agrees with the BEM within the line theory's error",
+          "[line][spectrum][slow]") {
   // Two terms, V tau_1 = 0.25 and 1 (a0 = 0.78), BEM at N = 32. The bounds are the standard
   // linear solid's measured line-theory errors on the paper's scene (docs/validation.md): d
   // 0.5%, chi 1%, a(0) and l 3%, b(0) 7% (6.4% at V tau/a0 = 0.1). Measured here: d 0.28%,

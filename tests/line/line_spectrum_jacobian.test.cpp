@@ -76,7 +76,9 @@ TEST_CASE("spectrum strip: slopes in the right sides and the half width", "[line
   // d/da: the slopes' own central difference (step eps^(1/3) a) against a step of 1e-4 a with
   // Richardson's extrapolation (error O(h^4) = 1e-16 a^4).
   const double h = 1e-4 * a;
-  const auto f = [&](double aa) { return field(viscoroll::spectrum_strip(aa, lengths, &right, c1)); };
+  const auto f = [&](double aa) {
+    return field(viscoroll::spectrum_strip(aa, lengths, &right, c1));
+  };
   const auto f1 = f(a + h), f2 = f(a - h), f3 = f(a + 2 * h), f4 = f(a - 2 * h);
   const std::vector<double> got{slopes.b_a, slopes.g0_a, slopes.pig1_a, slopes.centroid_a};
   for (std::size_t q = 0; q < 4; ++q) {

@@ -31,7 +31,8 @@ TEST_CASE("line spectrum: a certified least-squares minimum where the equations 
   CHECK_FALSE(minimum.root);
   CHECK(minimum.residual > viscoroll::numerics::default_root_tolerance<double>());
   bool warned = false;
-  for (const auto& w : minimum.warnings) warned = warned || w.find("least-squares minimum") != std::string::npos;
+  for (const auto& w : minimum.warnings)
+    warned = warned || w.find("least-squares minimum") != std::string::npos;
   CHECK(warned);
   // The minimum is the same contact as the root at N = 4 to the discretisation's change between
   // N = 4 and 6 (measured 0.13% in a(0), 0.1% in l, 2e-5 in d and chi; docs/validation.md).

@@ -1,11 +1,11 @@
-// LineOptions::stage_tolerance and stage_damping in the spectrum's line solver (docs/line-solver.md,
-// "Continuation in N"): intermediate stages stopped at max |r| <= 1e-2 and later stages started at
-// the damping 1e-9 end, at N = 4, on the root of the full end game (every stage to a root from
-// the damping 1e-3), for the two-term spectrum of the validation and a twenty-term one (f = 0.45
-// each, tau = 10^-3 ... 10^3), at speeds from where the slowest term is in its slow regime to the
-// glassy side. Bound: both are roots whose a posteriori error is at most sqrt(eps) in the scaled
-// unknowns, so a(0), l, d and chi (relative) and b(0) (relative to a(0)) agree within 8 sqrt(eps),
-// as for one term (line_stage_tolerance.test.cpp).
+// LineOptions::stage_tolerance and stage_damping in the spectrum's line solver
+// (docs/line-solver.md, "Continuation in N"): intermediate stages stopped at max |r| <= 1e-2 and
+// later stages started at the damping 1e-9 end, at N = 4, on the root of the full end game (every
+// stage to a root from the damping 1e-3), for the two-term spectrum of the validation and a
+// twenty-term one (f = 0.45 each, tau = 10^-3 ... 10^3), at speeds from where the slowest term is
+// in its slow regime to the glassy side. Bound: both are roots whose a posteriori error is at most
+// sqrt(eps) in the scaled unknowns, so a(0), l, d and chi (relative) and b(0) (relative to a(0))
+// agree within 8 sqrt(eps), as for one term (line_stage_tolerance.test.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>

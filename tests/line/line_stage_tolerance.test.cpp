@@ -37,8 +37,7 @@ TEST_CASE("line stage tolerance: fast() lands on the full end game's roots at 10
   int fewer = 0;
   for (int i = 0; i < 100; ++i) {
     const double vtau = std::pow(10.0, -3 + 6.0 * i / 99);
-    const double bound =
-        vtau >= 0.1 ? 8 * std::sqrt(std::numeric_limits<double>::epsilon()) : 2e-2;
+    const double bound = vtau >= 0.1 ? 8 * std::sqrt(std::numeric_limits<double>::epsilon()) : 2e-2;
     const auto a = quick.solve(paper.scene(vtau));
     const auto b = slow.solve(paper.scene(vtau));
     INFO("V tau/a0 = " << vtau << ": " << a.reason << " / " << b.reason);

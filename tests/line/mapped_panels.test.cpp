@@ -63,8 +63,8 @@ TEMPLATE_TEST_CASE("panels: ln(1 + t/c) nodes integrate e^-t / (1 + t/c) to roun
     INFO("c = " << c << ": " << t.size() << " nodes, relative error " << (got / exact - 1));
     CHECK(std::abs(got / exact - 1) < 16 * eps);  // measured <= 3 eps
   }
-  // A singularity at x_t = +-i s, w = ln(s/c) +- i pi/2: int_0^inf e^-t (1 + t)/((1 + t)^2 + s^2) dt
-  // against the same integral on panels 4x narrower.
+  // A singularity at x_t = +-i s, w = ln(s/c) +- i pi/2: int_0^inf e^-t (1 + t)/((1 + t)^2 + s^2)
+  // dt against the same integral on panels 4x narrower.
   for (const Real s : {Real(0.01), Real(1), Real(30)}) {
     const auto f = [&](Real x) { return std::exp(-x) * (1 + x) / ((1 + x) * (1 + x) + s * s); };
     std::vector<Real> t, w, tf, wf;

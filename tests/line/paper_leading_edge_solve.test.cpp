@@ -5,7 +5,6 @@
 // paper's (44) against (L6)"); at V tau = 0.03 a0 (44) has no root near the physical solution
 // (docs/theory.md section 4).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/line/paper_leading_edge.hpp>
@@ -49,7 +48,7 @@ Compared compare(double vtau) {
       PaperProblem{paper}, x, r,
       viscoroll::numerics::LeastSquaresOptions<double>{.analytic_jacobian = false});
   const auto shape = paper.shape(x);
-  return {out.converged, l6.b(0.0), shape.b(0.0), l6.d, paper.penetration(x),
+  return {out.converged,          l6.b(0.0), shape.b(0.0), l6.d, paper.penetration(x),
           r.cwiseAbs().maxCoeff()};
 }
 }  // namespace

@@ -57,7 +57,9 @@ TEST_CASE("static profile contact: the ellipsoid is Kalker's closed form (48)") 
   }
 }
 
-TEST_CASE("static profile contact: a tilted ellipsoid is the ellipsoid shifted (the log term on [y_-, y_+])") {
+TEST_CASE(
+    "static profile contact: a tilted ellipsoid is the ellipsoid shifted (the log term on [y_-, "
+    "y_+])") {
   // h = C2 y^2/2 + theta y = C2 (y + theta/C2)^2/2 - theta^2/(2 C2): the contact is Kalker's,
   // centred at -theta/C2, with d lowered by theta^2/(2 C2); only (G1)'s 16 (y_+ - y)(y - y_-)
   // gives that, since t is no longer y/l.

@@ -18,8 +18,10 @@ TEMPLATE_TEST_CASE("standard linear solid compliances", "[material]", float, dou
   const TestType pi = std::acos(TestType(-1));
   const TestType eps = std::numeric_limits<TestType>::epsilon();
   // Eq. (7): (1 - nu) / (2 pi mu_D); the long-term modulus is mu_D / (1 + f).
-  CHECK(std::abs(m.instantaneous_compliance() - TestType(0.75) / (4 * pi)) <= 4 * eps * m.instantaneous_compliance());
-  CHECK(std::abs(m.long_term_compliance() - 10 * m.instantaneous_compliance()) <= 4 * eps * m.long_term_compliance());
+  CHECK(std::abs(m.instantaneous_compliance() - TestType(0.75) / (4 * pi)) <=
+        4 * eps * m.instantaneous_compliance());
+  CHECK(std::abs(m.long_term_compliance() - 10 * m.instantaneous_compliance()) <=
+        4 * eps * m.long_term_compliance());
 }
 
 TEMPLATE_TEST_CASE("material parameters are validated", "[material][validation]", float, double) {
@@ -32,8 +34,9 @@ TEMPLATE_TEST_CASE("material parameters are validated", "[material][validation]"
   CHECK_THROWS_AS(StandardLinearSolid<T>(T(1), T(0.3), T(1), -inf), std::invalid_argument);
   CHECK_THROWS_AS(StandardLinearSolid<T>(T(1), T(0.3), inf, T(1)), std::invalid_argument);
   CHECK_THROWS_AS(Elastic<T>(std::numeric_limits<T>::quiet_NaN(), T(0.3)), std::invalid_argument);
-  CHECK_THROWS_WITH(StandardLinearSolid<T>(T(1), T(0.7), T(1), T(1)),
-                    Catch::Contains("nu") && Catch::Contains("0.7") && Catch::Contains("-1 < nu <= 0.5"));
+  CHECK_THROWS_WITH(
+      StandardLinearSolid<T>(T(1), T(0.7), T(1), T(1)),
+      Catch::Contains("nu") && Catch::Contains("0.7") && Catch::Contains("-1 < nu <= 0.5"));
   CHECK_NOTHROW(StandardLinearSolid<T>(T(1), T(0.5), T(0), T(0)));
 }
 

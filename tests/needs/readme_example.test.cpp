@@ -1,5 +1,7 @@
 // The README's code, as printed there: the one-scene example and the solver family's three
-// declarations, each compiled and run. If the README changes, this file changes with it.
+// declarations, each compiled and run. If the README changes, this file changes with it, so
+// clang-format leaves it as printed.
+// clang-format off
 #include <catch2/catch.hpp>
 
 #include <type_traits>
@@ -46,3 +48,4 @@ TEST_CASE("readme: the solver family's declarations", "[needs][bem]") {
 }
 
 }  // namespace test_readme_example
+// clang-format on

@@ -3,7 +3,6 @@
 // concept (tests/needs/CMakeLists.txt checks the compiler's message for two of them). Each
 // combination the README and docs/guide.md show is instantiated and solves a scene here.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -26,9 +25,13 @@ using viscoroll::StandardLinearSolid;
 
 // A solver template accepts <Real, Material, Quadrature> when the template-id is valid.
 template <class R, class M, class Q>
-concept PlaneAccepts = requires { typename PlaneSolver<R, M, Q>; };
+concept PlaneAccepts = requires {
+  typename PlaneSolver<R, M, Q>;
+};
 template <class R, class M, class Q>
-concept LineAccepts = requires { typename LineSolver<R, M, Q>; };
+concept LineAccepts = requires {
+  typename LineSolver<R, M, Q>;
+};
 }  // namespace
 
 // The materials: what each provides, as ConstitutiveModel states it.
@@ -69,15 +72,16 @@ TEST_CASE("solver family: a plane solver over another rule agrees with the defau
   const StandardLinearSolid<double> m(1.0, 0.5, 9.0, 1.0);
   const viscoroll::PlaneScene<double> scene{.c1 = 1.0, .load = std::acos(-1.0) / 10, .speed = 1.0};
   const auto ref = PlaneSolver(m).solve(scene);
-  const auto gk = PlaneSolver<double, StandardLinearSolid<double>, AdaptiveGaussKronrod<double>>(m)
-                      .solve(scene);
+  const auto gk =
+      PlaneSolver<double, StandardLinearSolid<double>, AdaptiveGaussKronrod<double>>(m).solve(
+          scene);
   REQUIRE(ref.converged);
   REQUIRE(gk.converged);
   // a, b and chi do not use the rule (closed forms given a): the same digits.
   CHECK(gk.a == ref.a);
   CHECK(gk.chi == ref.chi);
-  // The pressure (35) does: the adaptive rule's tolerance (3.7e-11 in double, quadrature/adaptive.hpp)
-  // against the 24-point panels' rounding-level result.
+  // The pressure (35) does: the adaptive rule's tolerance (3.7e-11 in double,
+  // quadrature/adaptive.hpp) against the 24-point panels' rounding-level result.
   const double x = ref.b;
   CHECK(std::abs(gk.pressure(x) - ref.pressure(x)) <= 1e-9 * ref.pressure(x));
 }
@@ -90,8 +94,9 @@ TEST_CASE("solver family: a line solver over 16-point panels agrees with the def
       .c1 = 1.0, .c2 = 0.0798291, .load = 2.0943951, .speed = 1.0};
   const viscoroll::LineOptions options{.terms = 4};
   const auto ref = LineSolver(m, options).solve(scene);
-  const auto g16 = LineSolver<double, StandardLinearSolid<double>, GaussLegendre<double, 16>>(m, options)
-                       .solve(scene);
+  const auto g16 =
+      LineSolver<double, StandardLinearSolid<double>, GaussLegendre<double, 16>>(m, options)
+          .solve(scene);
   REQUIRE(ref.converged);
   REQUIRE(g16.converged);
   // Both rules integrate every line integral to rounding on the graded panels (docs/theory.md

@@ -77,8 +77,8 @@ TEST_CASE("numerics: second-order term to steer within sqrt(eps), to certify wit
     INFO("offset " << offset << ": eigenvalues of J^T J " << gauss.eigenvalues().transpose()
                    << ", |S v1| " << s1);
     LsqMatrix steer, certify;
-    REQUIRE(viscoroll::detail::second_order_term(problem, x, jtj, g,
-                                                 SecondOrderAccuracy::steering, steer));
+    REQUIRE(viscoroll::detail::second_order_term(problem, x, jtj, g, SecondOrderAccuracy::steering,
+                                                 steer));
     REQUIRE(viscoroll::detail::second_order_term(problem, x, jtj, g,
                                                  SecondOrderAccuracy::certifying, certify));
     // Both exact on v1 to their difference error.

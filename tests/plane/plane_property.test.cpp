@@ -16,7 +16,8 @@ namespace test_plane_property {
 TEST_CASE("plane: random scenes end in a valid solution or a clear error", "[plane][property]") {
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> unit(0, 1);
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
   // Mostly log-uniform valid values; 1 in 12 draws replaced by an invalid one.
   auto draw = [&](double lo_exp, double hi_exp, double sign = 1) {
     const double u = unit(rng);
@@ -32,10 +33,11 @@ TEST_CASE("plane: random scenes end in a valid solution or a clear error", "[pla
     const double mu_d = draw(-6, 9), f = unit(rng) < 0.1 ? 0.0 : draw(-3, 4), tau = draw(-6, 4);
     const double nu = unit(rng) < 0.05 ? 0.75 : -0.99 + 1.49 * unit(rng);
     const double c1 = draw(-3, 3), load = draw(-6, 6), speed = unit(rng) < 0.05 ? 0.0 : draw(-3, 3);
-    INFO("trial " << trial << ": mu_d " << mu_d << " nu " << nu << " f " << f << " tau " << tau << " c1 " << c1
-                  << " load " << load << " speed " << speed);
+    INFO("trial " << trial << ": mu_d " << mu_d << " nu " << nu << " f " << f << " tau " << tau
+                  << " c1 " << c1 << " load " << load << " speed " << speed);
     try {
-      const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(mu_d, nu, f, tau));
+      const viscoroll::PlaneSolverD solver(
+          viscoroll::StandardLinearSolid<double>(mu_d, nu, f, tau));
       const auto s = solver.solve({c1, load, speed});
       ++solved;
       REQUIRE(s.converged);
@@ -49,7 +51,8 @@ TEST_CASE("plane: random scenes end in a valid solution or a clear error", "[pla
       CHECK(s.chi >= 0);
       CHECK(s.b - s.a < s.b + s.a);
       // (P2): a^2 + 2G = a0^2.
-      CHECK(std::abs(s.a * s.a + 2 * s.g - s.a_long_term * s.a_long_term) <= 16 * eps * s.a_long_term * s.a_long_term);
+      CHECK(std::abs(s.a * s.a + 2 * s.g - s.a_long_term * s.a_long_term) <=
+            16 * eps * s.a_long_term * s.a_long_term);
       // p >= 0 and finite on the contact (scale W/a), zero at both edges.
       const double pscale = load / s.a;
       for (int i = 1; i < 16; ++i) {

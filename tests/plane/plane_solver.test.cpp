@@ -47,8 +47,8 @@ Real moment(const Solution& s, int n, Real tol) {
   };
   Real error = 0;
   const Real pi = std::acos(Real(-1));
-  const Real value =
-      boost::math::quadrature::gauss_kronrod<Real, 31>::integrate(integrand, Real(0), pi, 15, tol, &error);
+  const Real value = boost::math::quadrature::gauss_kronrod<Real, 31>::integrate(
+      integrand, Real(0), pi, 15, tol, &error);
   return value;
 }
 
@@ -61,13 +61,15 @@ TEMPLATE_TEST_CASE("plane: slow and fast limits", "[plane]", float, double, long
   // O((a0 / V tau) ln(V tau / a0)): at V tau = 1e-9 a0 resp. 1e9 a0 it is below 1e-6.
   for (Real f : {Real(1), Real(9)}) {
     const Scene<Real> slow{f, Real(1e-9)};
-    const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(slow.material()).solve(slow.scene());
+    const auto s =
+        PlaneSolver<Real, StandardLinearSolid<Real>>(slow.material()).solve(slow.scene());
     INFO("f = " << f);
     CHECK(s.converged);
     CHECK(std::abs(s.a - 1) <= Real(1e-6));
     CHECK(std::abs(s.b) <= Real(1e-6));
     const Scene<Real> fast{f, Real(1e9)};
-    const auto t = PlaneSolver<Real, StandardLinearSolid<Real>>(fast.material()).solve(fast.scene());
+    const auto t =
+        PlaneSolver<Real, StandardLinearSolid<Real>>(fast.material()).solve(fast.scene());
     CHECK(t.converged);
     CHECK(std::abs(t.a * std::sqrt(1 + f) - 1) <= Real(1e-6));
     CHECK(std::abs(t.b) <= Real(1e-6));
@@ -75,7 +77,8 @@ TEMPLATE_TEST_CASE("plane: slow and fast limits", "[plane]", float, double, long
   }
 }
 
-TEMPLATE_TEST_CASE("plane: static and elastic scenes are Hertz", "[plane]", float, double, long double) {
+TEMPLATE_TEST_CASE("plane: static and elastic scenes are Hertz", "[plane]", float, double,
+                   long double) {
   using Real = TestType;
   const Real pi = std::acos(Real(-1));
   const Scene<Real> rest{Real(9), Real(0)};
@@ -135,7 +138,8 @@ TEMPLATE_TEST_CASE("plane: pressure invariants", "[plane]", float, double, long 
       // Just inside the edges p is small (square-root behaviour), and never negative.
       CHECK(std::abs(s.pressure(s.b - s.a * (1 - Real(1e-6)))) <= Real(1e-2) * pscale);
       Real pmin = 0;
-      for (int i = 1; i < 400; ++i) pmin = std::min(pmin, s.pressure(s.b - s.a * std::cos(std::acos(Real(-1)) * i / 400)));
+      for (int i = 1; i < 400; ++i)
+        pmin = std::min(pmin, s.pressure(s.b - s.a * std::cos(std::acos(Real(-1)) * i / 400)));
       CHECK(pmin >= -256 * eps<Real>() * pscale);
       const Real load = moment(s, 0, tol);
       CHECK(std::abs(load - W) <= (tol + 512 * eps<Real>()) * W);
@@ -168,7 +172,8 @@ TEST_CASE("plane: a pressure peak sits at the leading edge at small speed", "[pl
   // layer of width ~ V tau / (1 + f) (the global maximum stays near the centre, at the Hertz
   // value).
   const Scene<double> slow{9.0, 0.01};
-  const auto s = PlaneSolver<double, StandardLinearSolid<double>>(slow.material()).solve(slow.scene());
+  const auto s =
+      PlaneSolver<double, StandardLinearSolid<double>>(slow.material()).solve(slow.scene());
   const double layer = 0.01 / 10, edge = s.b + s.a, window = 20 * layer;
   const auto local = s.strip.peak_between(edge - window, edge);
   INFO("local peak at " << local.x << ", leading edge " << edge);
@@ -178,7 +183,8 @@ TEST_CASE("plane: a pressure peak sits at the leading edge at small speed", "[pl
   CHECK(s.strip.pressure_slope(local.x + layer / 4) < 0);
   // Far above the Hertz pressure there (which is (2W/(pi a^2)) sqrt(a^2 - xi^2)).
   const double xi = local.x - s.b, W = slow.scene().load;
-  CHECK(local.pressure > 3 * 2 * W / (std::acos(-1.0) * s.a * s.a) * std::sqrt(s.a * s.a - xi * xi));
+  CHECK(local.pressure >
+        3 * 2 * W / (std::acos(-1.0) * s.a * s.a) * std::sqrt(s.a * s.a - xi * xi));
 }
 
 TEST_CASE("plane: the scene is validated", "[plane][validation]") {
@@ -186,7 +192,8 @@ TEST_CASE("plane: the scene is validated", "[plane][validation]") {
   CHECK_THROWS_WITH(solver.solve({0.0, 1.0, 1.0}), Catch::Contains("c1"));
   CHECK_THROWS_WITH(solver.solve({1.0, -1.0, 1.0}), Catch::Contains("load"));
   CHECK_THROWS_WITH(solver.solve({1.0, 1.0, std::nan("")}), Catch::Contains("speed"));
-  CHECK_THROWS_AS(viscoroll::PlaneSolverD(StandardLinearSolid<double>(1, 0.3, 9, 1), viscoroll::PlaneOptions{0}),
+  CHECK_THROWS_AS(viscoroll::PlaneSolverD(StandardLinearSolid<double>(1, 0.3, 9, 1),
+                                          viscoroll::PlaneOptions{0}),
                   std::invalid_argument);
 }
 
@@ -198,9 +205,11 @@ TEST_CASE("plane: the quadrature policy only changes rounding", "[plane][quadrat
   for (double vtau : {0.01, 1.0, 100.0}) {
     const Scene<double> sc{9.0, vtau};
     const auto fixed = PlaneSolver<double, SLS>(sc.material()).solve(sc.scene());
-    const auto g16 = PlaneSolver<double, SLS, viscoroll::GaussLegendre<double, 16>>(sc.material()).solve(sc.scene());
+    const auto g16 = PlaneSolver<double, SLS, viscoroll::GaussLegendre<double, 16>>(sc.material())
+                         .solve(sc.scene());
     const auto adaptive =
-        PlaneSolver<double, SLS, viscoroll::AdaptiveGaussKronrod<double>>(sc.material()).solve(sc.scene());
+        PlaneSolver<double, SLS, viscoroll::AdaptiveGaussKronrod<double>>(sc.material())
+            .solve(sc.scene());
     const double scale = sc.scene().load / fixed.a;
     for (double s : {-0.999, -0.5, 0.0, 0.7, 0.999}) {
       const double x = fixed.b + s * fixed.a;
@@ -211,7 +220,8 @@ TEST_CASE("plane: the quadrature policy only changes rounding", "[plane][quadrat
   }
 }
 
-TEMPLATE_TEST_CASE("plane: extreme speeds and creep ratios", "[plane][stiff]", float, double, long double) {
+TEMPLATE_TEST_CASE("plane: extreme speeds and creep ratios", "[plane][stiff]", float, double,
+                   long double) {
   using Real = TestType;
   // Issue 2: nothing overflows or loses digits for V tau/a0 from 1e-4 to 1e4, here with f up to
   // 1e4 (alpha = (1+f) a/(V tau) up to 1e8). The load is met to the moment quadrature's
@@ -221,7 +231,8 @@ TEMPLATE_TEST_CASE("plane: extreme speeds and creep ratios", "[plane][stiff]", f
     for (Real vtau : {Real(1e-4), Real(1e4)}) {
       const Scene<Real> sc{f, vtau};
       const auto s = PlaneSolver<Real, StandardLinearSolid<Real>>(sc.material()).solve(sc.scene());
-      INFO("f = " << f << ", V tau/a0 = " << vtau << ", a = " << s.a << ", b = " << s.b << ", chi = " << s.chi);
+      INFO("f = " << f << ", V tau/a0 = " << vtau << ", a = " << s.a << ", b = " << s.b
+                  << ", chi = " << s.chi);
       REQUIRE(s.converged);
       CHECK(std::isfinite(static_cast<double>(s.chi)));
       CHECK(s.a <= 1 + 4 * eps<Real>());

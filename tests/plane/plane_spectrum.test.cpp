@@ -130,7 +130,8 @@ TEST_CASE("plane spectrum: two times far apart give two peaks of chi with a plat
   CHECK(chi[60] < 0.05 * top);
 }
 
-TEST_CASE("plane spectrum: agrees with the independent collocation, two terms", "[plane][spectrum][reference]") {
+TEST_CASE("plane spectrum: agrees with the independent collocation, two terms",
+          "[plane][spectrum][reference]") {
   const PronyCreep<double> m(1.0, 0.5, {{2.0, 0.3}, {5.0, 30.0}});
   for (double speed : {0.1, 1.0, 10.0}) check_against_collocation(m, speed, 96);
   // One term far into its glassy range (V tau_2 / a ~ 1e5 ... 1e6): its effect on b and chi is

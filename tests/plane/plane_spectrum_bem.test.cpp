@@ -26,7 +26,8 @@ void check_long_roller(const PronyCreep<double>& m, double speed) {
   viscoroll::BemOptions options;
   options.grid = 16;
   const viscoroll::BemSolver bem(m, options);
-  const auto s = bem.solve(viscoroll::BemScene<double>{.c1 = 1.0, .c2 = 1e-4, .load = 1.0, .speed = speed});
+  const auto s =
+      bem.solve(viscoroll::BemScene<double>{.c1 = 1.0, .c2 = 1e-4, .load = 1.0, .speed = speed});
   REQUIRE(s.converged);
   const int j0 = (s.grid.ny - 1) / 2;
   double w = 0, moment = 0;

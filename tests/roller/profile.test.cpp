@@ -1,8 +1,8 @@
 // The roller profiles (roller/profile.hpp, docs/rollers.md): values against their definitions,
 // smoothness where the pieces meet, the limits that tie them to the paper's ellipsoid, the tilt's
 // mirror symmetry and the errors that name a bad parameter.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -54,7 +54,8 @@ TEST_CASE("profile: a crowned cylinder without flat part is the ellipsoid near t
   const EllipsoidProfile<double> ellipsoid(100.0, 0.5);
   for (double y : {1e-4, 1e-3, 1e-2}) {
     const double relative = y * y / (4 * 2.0 * 2.0);
-    CHECK(std::abs(barrel.drop(y) / ellipsoid.drop(y) - 1 - relative) <= 4 * relative * relative + 16 * eps);
+    CHECK(std::abs(barrel.drop(y) / ellipsoid.drop(y) - 1 - relative) <=
+          4 * relative * relative + 16 * eps);
   }
 }
 
@@ -139,12 +140,17 @@ TEST_CASE("profile: bad parameters are errors naming them", "[profile]") {
              Catch::Contains("crown_radius"));
   CHECK_THAT(message([] { CrownedCylinder<double>(0.01, 0.02, 1.0, 0.01); }),
              Catch::Contains("length"));
-  CHECK_THAT(message([&] { LogarithmicCrown<double>(0.01, inf, 1e-6); }), Catch::Contains("length"));
+  CHECK_THAT(message([&] { LogarithmicCrown<double>(0.01, inf, 1e-6); }),
+             Catch::Contains("length"));
   CHECK_THAT(message([] { LogarithmicCrown<double>(0.01, 0.02, 1e-6, 0.0); }),
              Catch::Contains("end_drop"));
-  CHECK_THAT(message([] { TabulatedProfile<double>(0.01, {0, 1, 1, 2}, {0, 0, 0, 0}); }),
+  CHECK_THAT(message([] {
+               TabulatedProfile<double>(0.01, {0, 1, 1, 2}, {0, 0, 0, 0});
+             }),
              Catch::Contains("y[2]"));
-  CHECK_THAT(message([] { TabulatedProfile<double>(0.01, {0, 1, 2}, {0, 0, 0}); }),
+  CHECK_THAT(message([] {
+               TabulatedProfile<double>(0.01, {0, 1, 2}, {0, 0, 0});
+             }),
              Catch::Contains("at least 4"));
   CHECK_THAT(message([] { Tilted<EllipsoidProfile<double>>(EllipsoidProfile<double>(1, 1), 0.2); }),
              Catch::Contains("tilt"));

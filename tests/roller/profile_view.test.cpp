@@ -52,8 +52,8 @@ TEST_CASE("profile view: a profile type of one's own solves as the library's pro
   const double c1 = 1, c2 = 0.1, load = 0.3 / (3 * rubber.instantaneous_compliance());
   for (const double speed : {0.0, 0.3, 3.0}) {
     INFO("V = " << speed);
-    const auto own = solver.solve(
-        viscoroll::LineProfileScene<OwnEllipsoid>{OwnEllipsoid{c1, c2}, load, speed});
+    const auto own =
+        solver.solve(viscoroll::LineProfileScene<OwnEllipsoid>{OwnEllipsoid{c1, c2}, load, speed});
     const auto lib = solver.solve(viscoroll::LineProfileScene<viscoroll::EllipsoidProfile<double>>{
         viscoroll::EllipsoidProfile<double>(c1, c2), load, speed});
     REQUIRE(lib.converged);

@@ -280,9 +280,10 @@ TEST_CASE("Bessel ratios in float reach arguments whose unscaled functions overf
   CHECK(k > 1e38f);
 }
 
-TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 eps; other types "
-          "forward",
-          "[special]") {
+TEST_CASE(
+    "bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 eps; other types "
+    "forward",
+    "[special]") {
   using viscoroll::special::bessel_i1_over_i0_fast;
   // Against the 60-digit references at every point of the table (they straddle x_T = 21 and the
   // sqrt(eps) branch), and against cpp_bin_float_50 on a geometric grid of 696 points in
@@ -302,9 +303,9 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
     const Mp50 big(x);
     const Mp50 exact =
         boost::math::cyl_bessel_i(Mp50(1), big) / boost::math::cyl_bessel_i(Mp50(0), big);
-    const double error = static_cast<double>(
-        abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) / exact) /
-        std::numeric_limits<double>::epsilon());
+    const double error =
+        static_cast<double>(abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) / exact) /
+                            std::numeric_limits<double>::epsilon());
     worst = std::max(worst, error);
   }
   for (int k = 1; k < 42; ++k) {  // both sides of each piece boundary
@@ -312,9 +313,9 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
       const Mp50 big(x);
       const Mp50 exact =
           boost::math::cyl_bessel_i(Mp50(1), big) / boost::math::cyl_bessel_i(Mp50(0), big);
-      worst = std::max(worst, static_cast<double>(abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) /
-                                                      exact) /
-                                                  std::numeric_limits<double>::epsilon()));
+      worst = std::max(worst,
+                       static_cast<double>(abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) / exact) /
+                                           std::numeric_limits<double>::epsilon()));
     }
   }
   CHECK(worst <= 2.5);
@@ -325,9 +326,9 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
   worst = 0;
   for (double x = 21; x < 1e9; x *= 1.003) {  // 6904 points
     const Mp50 exact = viscoroll::special::bessel_i1_over_i0(Mp50(x));
-    worst = std::max(worst, static_cast<double>(abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) /
-                                                    exact) /
-                                                std::numeric_limits<double>::epsilon()));
+    worst =
+        std::max(worst, static_cast<double>(abs((Mp50(bessel_i1_over_i0_fast(x)) - exact) / exact) /
+                                            std::numeric_limits<double>::epsilon()));
   }
   CHECK(worst <= 1);
   CHECK(bessel_i1_over_i0_fast(std::numeric_limits<double>::infinity()) == 1);
@@ -338,9 +339,10 @@ TEST_CASE("bessel_i1_over_i0_fast: double from its own interpolant, within 2.5 e
     CHECK(bessel_i1_over_i0_fast(x) == bessel_i1_over_i0(x));
 }
 
-TEST_CASE("bessel_i2_over_i0_fast: within 2.5 eps of the 50-digit ratio; below 4 and in other "
-          "types the accurate function",
-          "[special]") {
+TEST_CASE(
+    "bessel_i2_over_i0_fast: within 2.5 eps of the 50-digit ratio; below 4 and in other "
+    "types the accurate function",
+    "[special]") {
   using viscoroll::special::bessel_i2_over_i0;
   using viscoroll::special::bessel_i2_over_i0_fast;
   // From x = 4 on, 1 - 2 r/x with r = bessel_i1_over_i0_fast(x) (within 1.79 eps, measured in the
@@ -351,13 +353,13 @@ TEST_CASE("bessel_i2_over_i0_fast: within 2.5 eps of the 50-digit ratio; below 4
   double worst = 0;
   for (double x = 4; x < 1e6; x *= 1.01) {  // 1250 points
     const Mp50 big(x);
-    const Mp50 ratio =
-        x < 21 ? Mp50(boost::math::cyl_bessel_i(Mp50(1), big) / boost::math::cyl_bessel_i(Mp50(0), big))
-               : viscoroll::special::bessel_i1_over_i0(big);
+    const Mp50 ratio = x < 21 ? Mp50(boost::math::cyl_bessel_i(Mp50(1), big) /
+                                     boost::math::cyl_bessel_i(Mp50(0), big))
+                              : viscoroll::special::bessel_i1_over_i0(big);
     const Mp50 exact = 1 - 2 * ratio / big;
-    worst = std::max(worst, static_cast<double>(abs((Mp50(bessel_i2_over_i0_fast(x)) - exact) /
-                                                    exact) /
-                                                std::numeric_limits<double>::epsilon()));
+    worst =
+        std::max(worst, static_cast<double>(abs((Mp50(bessel_i2_over_i0_fast(x)) - exact) / exact) /
+                                            std::numeric_limits<double>::epsilon()));
   }
   INFO("worst error " << worst << " eps");
   CHECK(worst <= 2.5);
@@ -399,7 +401,8 @@ TEST_CASE("bessel_i1_over_i0_fast: the interpolant's table", "[special]") {
     }
     for (int j = 2; j < n; ++j) {
       Mp50 t_next[n];
-      for (int m = 0; m < n; ++m) t_next[m] = (m > 0 ? Mp50(2 * t_cur[m - 1]) : Mp50(0)) - t_prev[m];
+      for (int m = 0; m < n; ++m)
+        t_next[m] = (m > 0 ? Mp50(2 * t_cur[m - 1]) : Mp50(0)) - t_prev[m];
       for (int m = 0; m < n; ++m) {
         t_prev[m] = t_cur[m];
         t_cur[m] = t_next[m];

@@ -211,7 +211,8 @@ struct MemoryTerm {
 /// M_n(s) = H_n(s) + sum_k f_k m_n(s; v_k) (one memory integral per term of the spectrum).
 template <class Real>
 Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> collocation_matrix(
-    const std::vector<MemoryTerm<Real>>& terms, int n_terms, const QuadratureSettings<Real>& q = {}) {
+    const std::vector<MemoryTerm<Real>>& terms, int n_terms,
+    const QuadratureSettings<Real>& q = {}) {
   using std::cos;
   const Real pi = boost::math::constants::pi<Real>();
   const int rows = n_terms + 1;
@@ -317,7 +318,8 @@ HunterReference<Real> hunter_reference(Real compliance, Real f, Real vt, Real c1
   if (!(f >= 0) || !(vt >= 0) || !std::isfinite(static_cast<double>(f)) ||
       !std::isfinite(static_cast<double>(vt)))
     throw std::invalid_argument("hunter_reference: need c, C1, W > 0, f, V tau >= 0, N >= 2");
-  return hunter_reference(compliance, std::vector<hunter_detail::MemoryTerm<Real>>{{f, vt}}, c1, load, n_terms);
+  return hunter_reference(compliance, std::vector<hunter_detail::MemoryTerm<Real>>{{f, vt}}, c1,
+                          load, n_terms);
 }
 
 template <class Real>

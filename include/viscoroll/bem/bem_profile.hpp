@@ -47,15 +47,14 @@ Real hertz_length(Real c1, Real c2, Real cp) {
 /// sizes the grid.
 template <RealScalar Real>
 struct ProfileExtent {
-  Real center;      ///< yc, the lowest point of h(y) within the estimate
-  Real half_length; ///< l*
-  Real c2_grid;     ///< C2g
+  Real center;       ///< yc, the lowest point of h(y) within the estimate
+  Real half_length;  ///< l*
+  Real c2_grid;      ///< C2g
 };
 
 /// (B14) for profile `p` under long-term compliance x load `cp` (> 0).
 template <RollerProfile P>
-ProfileExtent<typename P::real_type> profile_extent(const P& p,
-                                                    typename P::real_type cp) {
+ProfileExtent<typename P::real_type> profile_extent(const P& p, typename P::real_type cp) {
   using Real = typename P::real_type;
   using std::abs;
   using std::cbrt;
@@ -130,9 +129,9 @@ ProfileExtent<typename P::real_type> profile_extent(const P& p,
 /// invalid load or speed.
 template <RollerProfile P, ConstitutiveModel Material>
 requires std::same_as<typename P::real_type, typename Material::real_type>
-BemScene<typename P::real_type> bem_scene(const P& profile, const Material& material,
-                                          typename P::real_type load,
-                                          typename P::real_type speed) {
+    BemScene<typename P::real_type> bem_scene(const P& profile, const Material& material,
+                                              typename P::real_type load,
+                                              typename P::real_type speed) {
   using Real = typename P::real_type;
   detail::require_positive("load", load);
   detail::require_non_negative("speed", speed);
@@ -141,26 +140,25 @@ BemScene<typename P::real_type> bem_scene(const P& profile, const Material& mate
   const auto extent = bem::profile_extent(profile, cp);
   const Real c1 = profile.c1(), y_min = profile.y_min(), y_max = profile.y_max();
   const Real inside = 1 - 64 * std::numeric_limits<Real>::epsilon();
-  return BemScene<Real>{
-      .c1 = c1,
-      .c2 = extent.c2_grid,
-      .load = load,
-      .speed = speed,
-      .profile =
-          [profile, c1, y_min, y_max, inside](Real x, Real y) {
-            const Real across = c1 * x * x / 2;
-            if (y <= y_min * inside) {
-              const Real end = y_min * inside;
-              return across + profile.drop(end) + (end - y);
-            }
-            if (y >= y_max * inside) {
-              const Real end = y_max * inside;
-              return across + profile.drop(end) + (y - end);
-            }
-            return across + profile.drop(y);
-          },
-      .y_min = y_min,
-      .y_max = y_max};
+  return BemScene<Real>{.c1 = c1,
+                        .c2 = extent.c2_grid,
+                        .load = load,
+                        .speed = speed,
+                        .profile =
+                            [profile, c1, y_min, y_max, inside](Real x, Real y) {
+                              const Real across = c1 * x * x / 2;
+                              if (y <= y_min * inside) {
+                                const Real end = y_min * inside;
+                                return across + profile.drop(end) + (end - y);
+                              }
+                              if (y >= y_max * inside) {
+                                const Real end = y_max * inside;
+                                return across + profile.drop(end) + (y - end);
+                              }
+                              return across + profile.drop(y);
+                            },
+                        .y_min = y_min,
+                        .y_max = y_max};
 }
 
 }  // namespace viscoroll

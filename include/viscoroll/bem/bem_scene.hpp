@@ -153,7 +153,7 @@ Real edge_offset(Real p_last, Real p_prev) {
 /// and leading edges of the stretch of contact cells around it, by edge_offset (B12).
 template <RealScalar Real>
 struct RowContact {
-  Real p_max = 0;                 ///< the row's largest pressure (first cell of several)
+  Real p_max = 0;                  ///< the row's largest pressure (first cell of several)
   Real trailing = 0, leading = 0;  ///< the edges; both 0 when p_max <= 0
 };
 
@@ -169,9 +169,10 @@ RowContact<Real> row_contact(const BemGrid<Real>& g, const std::vector<Real>& p,
   while (lead + 1 < g.nx && at(lead + 1) > 0) ++lead;
   while (trail > 0 && at(trail - 1) > 0) --trail;
   const bool wide = lead > trail;
-  return {.p_max = at(peak),
-          .trailing = g.x(trail) - g.hx * (wide ? edge_offset(at(trail), at(trail + 1)) : Real(1) / 2),
-          .leading = g.x(lead) + g.hx * (wide ? edge_offset(at(lead), at(lead - 1)) : Real(1) / 2)};
+  return {
+      .p_max = at(peak),
+      .trailing = g.x(trail) - g.hx * (wide ? edge_offset(at(trail), at(trail + 1)) : Real(1) / 2),
+      .leading = g.x(lead) + g.hx * (wide ? edge_offset(at(lead), at(lead - 1)) : Real(1) / 2)};
 }
 
 }  // namespace bem
@@ -215,7 +216,8 @@ struct BemSolution {
     std::vector<Real> row(static_cast<std::size_t>(grid.ny), Real(0));
     int first = -1, last = -1;
     for (int j = 0; j < grid.ny; ++j) {
-      for (int i = 0; i < grid.nx; ++i) row[static_cast<std::size_t>(j)] += std::max(at(i, j), Real(0));
+      for (int i = 0; i < grid.nx; ++i)
+        row[static_cast<std::size_t>(j)] += std::max(at(i, j), Real(0));
       if (row[static_cast<std::size_t>(j)] > 0) {
         if (first < 0) first = j;
         last = j;
@@ -234,7 +236,8 @@ struct BemSolution {
     // beyond (half a row when the rows do not fall towards the end).
     const auto tip = [&](int j, int inner) {
       const Real f_end = row[static_cast<std::size_t>(j)];
-      const Real f_in = inner >= first && inner <= last ? row[static_cast<std::size_t>(inner)] : Real(0);
+      const Real f_in =
+          inner >= first && inner <= last ? row[static_cast<std::size_t>(inner)] : Real(0);
       return f_in > f_end ? std::min(f_end / (f_in - f_end), Real(1)) : Real(1) / 2;
     };
     out.y_plus = grid.y(last) + grid.hy * tip(last, last - 1);

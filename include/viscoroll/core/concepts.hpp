@@ -18,14 +18,15 @@ namespace viscoroll {
 /// Constrained through std::numeric_limits, not std::floating_point, so that class types with a
 /// numeric_limits specialisation qualify.
 template <class T>
-concept RealScalar = std::numeric_limits<T>::is_specialized && !std::numeric_limits<T>::is_integer &&
-                     requires(T a, T b) {
-                       { a + b } -> std::convertible_to<T>;
-                       { a - b } -> std::convertible_to<T>;
-                       { a * b } -> std::convertible_to<T>;
-                       { a / b } -> std::convertible_to<T>;
-                       { a < b } -> std::convertible_to<bool>;
-                     };
+concept RealScalar =
+    std::numeric_limits<T>::is_specialized && !std::numeric_limits<T>::is_integer &&
+    requires(T a, T b) {
+  { a + b } -> std::convertible_to<T>;
+  { a - b } -> std::convertible_to<T>;
+  { a* b } -> std::convertible_to<T>;
+  { a / b } -> std::convertible_to<T>;
+  { a < b } -> std::convertible_to<bool>;
+};
 
 /// One memory term of a solid's creep function: creep ratio f_k and retardation time tau_k of
 ///   J(t) = J_g [1 + sum_k f_k (1 - exp(-t / tau_k))]       (Eq. 1 for one term; theory.md (R2)).
@@ -74,18 +75,20 @@ concept ConstitutiveModel = RealScalar<typename M::real_type> && requires(const 
 /// spectrum of several times (PronyCreep, PronyRelaxation) takes the generalisations of
 /// docs/theory.md sections 12 and 14 in the plane and the line solver.
 template <class M>
-concept SingleTimeModel =
-    ConstitutiveModel<M> && (M::memory_term_count == 0 || M::memory_term_count == 1);
+concept SingleTimeModel = ConstitutiveModel<M> &&
+    (M::memory_term_count == 0 || M::memory_term_count == 1);
 
 /// Quadrature policy: a stateless rule over Real, as Boost's gauss<Real, N>.
 ///
-/// A rule Q provides `static Real integrate(F f, Real a, Real b)` for any callable F : Real -> Real,
-/// approximating the integral of f over [a, b] (a may exceed b). Fixed rules are exact for
+/// A rule Q provides `static Real integrate(F f, Real a, Real b)` for any callable F : Real ->
+/// Real, approximating the integral of f over [a, b] (a may exceed b). Fixed rules are exact for
 /// polynomials up to their degree; adaptive rules meet their documented tolerance or say so.
 /// Models: GaussLegendre<Real, N>, AdaptiveGaussKronrod<Real, ...>.
 template <class Q, class Real>
 concept QuadratureRule = RealScalar<Real> && requires(Real a, Real b) {
-  { Q::integrate([](Real x) { return x; }, a, b) } -> std::convertible_to<Real>;
+  {
+    Q::integrate([](Real x) { return x; }, a, b)
+    } -> std::convertible_to<Real>;
 };
 
 /// A fixed quadrature rule that exposes its nodes and weights on [-1, 1], for solvers that

@@ -18,8 +18,8 @@
 #include <cmath>
 #include <limits>
 #include <vector>
-#include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/binary.hpp>
+#include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
@@ -48,7 +48,8 @@ struct SpectrumStrip {
   /// Pi_g'(0) + e_2, e_2 = sum_{j<k} lambda_j lambda_k (a length squared): the constant that the
   /// memory adds to the line equation (34) of a spectrum, docs/theory.md (S13).
   Real pig1{};
-  Real centroid{};  ///< int (x - b) p dx / int p dx, the pressure's centroid ahead of the centre (S10)
+  Real centroid{};  ///< int (x - b) p dx / int p dx, the pressure's centroid ahead of the centre
+                    ///< (S10)
   Real residual{};  ///< max |X r - rhs| / (|X| |r| + |rhs|) of the linear solve (S5)
   /// Amplification of rounding in the pressure (S9), sum_i |A_i| (1 for one term).
   Real amplification{};
@@ -75,7 +76,8 @@ namespace detail {
 template <class Real>
 Real spectrum_term_moment(Real even, Real odd, Real g, Real alpha, Real mu) {
   if (alpha > 1) return odd / 2 - mu * (even / 2 + g);
-  // e1 = (1/2) sum_{j>=1} (alpha/2)^{2j} / (j! (j+1)!),  e0 = (1/alpha) sum_{j>=1} (alpha/2)^{2j} / (j!)^2.
+  // e1 = (1/2) sum_{j>=1} (alpha/2)^{2j} / (j! (j+1)!),
+  // e0 = (1/alpha) sum_{j>=1} (alpha/2)^{2j} / (j!)^2.
   const Real q = alpha * alpha / 4;
   Real t1 = 1, t0 = 1, e1 = 0, e0 = 0;  // t1 = q^j/(j!(j+1)!), t0 = q^j/(j!)^2
   for (int j = 1; j <= 40; ++j) {
@@ -94,8 +96,7 @@ Real spectrum_term_moment(Real even, Real odd, Real g, Real alpha, Real mu) {
 /// columns), by Gaussian elimination with partial pivoting, in place: the solutions in rhs.
 /// Small dense systems only (n = 2M + 1).
 template <class Real>
-void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n,
-                 std::size_t columns) {
+void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n, std::size_t columns) {
   using std::abs;
   for (std::size_t c = 0; c < n; ++c) {
     std::size_t pivot = c;
@@ -111,7 +112,8 @@ void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n,
       const Real factor = X[r * n + c] / d;
       if (factor == 0) continue;
       for (std::size_t k = c; k < n; ++k) X[r * n + k] -= factor * X[c * n + k];
-      for (std::size_t j = 0; j < columns; ++j) rhs[r * columns + j] -= factor * rhs[c * columns + j];
+      for (std::size_t j = 0; j < columns; ++j)
+        rhs[r * columns + j] -= factor * rhs[c * columns + j];
     }
   }
   for (std::size_t c = n; c-- > 0;) {
@@ -259,7 +261,7 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
     const Real odd = weight[i] * (mu[i] / a) * (1 - product[i]) - weight[i] * b + x[m + i];
     out.u[i] = x[i] * a * a;
     out.w[i] = odd * a;
-    g0 += x[i];  // G0 = Pi_h(0) = sum_i A_i u_i (S8)
+    g0 += x[i];                // G0 = Pi_h(0) = sum_i A_i u_i (S8)
     pig1 += mu[i] * x[m + i];  // (S13): Pi_g'(0) + e_2 = a sum_i mu_i W_i (W_i in units of a)
     moment += detail::spectrum_term_moment(weight[i], odd, x[i], a / mu[i], mu[i] / a);
   }
@@ -294,7 +296,8 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
     std::vector<Real> X1 = X0;
     detail::solve_dense(X1, cols, n, m);
     const Real half_g = Real(1) / 2 + g0;
-    for (auto* v : {&slopes->b, &slopes->g0, &slopes->pig1, &slopes->centroid}) v->assign(m, Real(0));
+    for (auto* v : {&slopes->b, &slopes->g0, &slopes->pig1, &slopes->centroid})
+      v->assign(m, Real(0));
     for (std::size_t k = 0; k < m; ++k) {
       const auto z = [&](std::size_t row) { return cols[row * m + k]; };
       Real dg = 0, dpig = 0, dmoment = 0;
@@ -365,8 +368,7 @@ class SpectrumStripPressure {
       if (l < a_) layers.push_back(times_power_of_two(l, units_.length));
     return detail::strip_peak(
         trailing_edge(), leading_edge(), leading_edge(), layers,
-        [this](Real x) { return pressure(x); }, [this](Real x) { return pressure_slope(x); },
-        true);
+        [this](Real x) { return pressure(x); }, [this](Real x) { return pressure_slope(x); }, true);
   }
 
  private:

@@ -142,9 +142,9 @@ PressurePeak<Real> strip_peak(Real lo, Real hi, Real edge, const std::vector<Rea
       if (p >= best_p) return {x, p};
     }
   }
-  const auto found = boost::math::tools::brent_find_minima(
-      [&pressure](Real x) { return -pressure(x); }, left, right,
-      std::numeric_limits<Real>::digits / 2);
+  const auto found =
+      boost::math::tools::brent_find_minima([&pressure](Real x) { return -pressure(x); }, left,
+                                            right, std::numeric_limits<Real>::digits / 2);
   if (-found.second >= best_p) return {found.first, -found.second};
   return {xs[best], best_p};
 }
@@ -191,7 +191,14 @@ class StripPressure {
   /// The same strip with c1, a, b, g, vtau and compliance given in `units` (StripUnits).
   StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
                 Real compliance)
-      : units_(units), c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance),
+      : units_(units),
+        c1_(c1),
+        a_(a),
+        b_(b),
+        g_(g),
+        vtau_(vtau),
+        f_(f),
+        c_(compliance),
         odd_(vtau - b) {}
 
   /// A strip whose pseudo-pressure (32) has the coefficients `even`, `odd` and g:
@@ -201,8 +208,16 @@ class StripPressure {
   /// even a^2 I1(alpha)/alpha - odd a I1(alpha) + g I0(alpha) = 0.
   StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
                 Real compliance, Real even, Real odd)
-      : units_(units), c1_(c1), a_(a), b_(b), g_(g), vtau_(vtau), f_(f), c_(compliance),
-        odd_(odd), even_(even) {}
+      : units_(units),
+        c1_(c1),
+        a_(a),
+        b_(b),
+        g_(g),
+        vtau_(vtau),
+        f_(f),
+        c_(compliance),
+        odd_(odd),
+        even_(even) {}
 
   Real half_width() const { return length(a_); }
   Real offset() const { return length(b_); }
@@ -312,7 +327,8 @@ class StripPressure {
     return sum;
   }
 
-  // phi(t) = even (a^2 - t^2) + odd t + G (even = 1, odd = V tau - b for Eq. (32)), the numerator of Eq. (32) over C1/(2 pi).
+  // phi(t) = even (a^2 - t^2) + odd t + G (even = 1, odd = V tau - b for Eq. (32)), the numerator
+  // of Eq. (32) over C1/(2 pi).
   Real phi_from_cos(Real cos_theta, Real sin_theta) const {
     return even_ * (a_ * a_ * sin_theta * sin_theta) + odd_ * a_ * cos_theta + g_;
   }
@@ -382,8 +398,8 @@ class StripPressure {
 
   StripUnits units_;
   Real c1_, a_, b_, g_, vtau_, f_, c_;  // in units_
-  Real odd_;                           // the coefficient of xi in (32): V tau - b unless given
-  Real even_ = 1;                      // the coefficient of a^2 - xi^2 in (32): 1 unless given
+  Real odd_;                            // the coefficient of xi in (32): V tau - b unless given
+  Real even_ = 1;                       // the coefficient of a^2 - xi^2 in (32): 1 unless given
 };
 
 }  // namespace viscoroll

@@ -16,7 +16,8 @@ template <class Real>
 std::string format_value(const Real& value) {
   std::ostringstream out;
   // digits10 prints 0.7 as 0.7, not as its binary expansion.
-  out.precision(std::numeric_limits<Real>::is_specialized ? std::numeric_limits<Real>::digits10 : 17);
+  out.precision(std::numeric_limits<Real>::is_specialized ? std::numeric_limits<Real>::digits10
+                                                          : 17);
   out << value;
   return out.str();
 }

@@ -79,8 +79,7 @@ class LineNodeRule {
   /// so the first panel is l/4). A symmetric contact (both = false) takes the half [0, l] with
   /// its weights doubled (exact: the sum is twice the half's, bit for bit); an asymmetric one
   /// (both) the halves [c, c + l] and [c - l, c], y = c +- s, each with its own end.
-  void load(const LineShape<Real>& s, bool both, std::vector<Real>& y,
-            std::vector<Real>& w) const {
+  void load(const LineShape<Real>& s, bool both, std::vector<Real>& y, std::vector<Real>& w) const {
     const std::size_t first = y.size();
     append_side_nodes(s, s.l, s.l, 1, s.l, y, w);
     if (!both) {

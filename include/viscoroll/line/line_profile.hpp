@@ -81,7 +81,8 @@ LineShape<Real> profile_line_shape(const StaticProfileContact<Real>& s, Real a_r
     const Real series = asymmetric ? (s.series(t) + s.series(-t)) / 2 : s.series(t);
     return ratio + log(s.weight(t) / w) / 2 + series;
   };
-  LineShape<Real> shape{a_ref, s.half_length(),
+  LineShape<Real> shape{a_ref,
+                        s.half_length(),
                         LineShape<Real>::interpolate(LineBasis::t_squared, Real(0), n, g),
                         {b_over}};
   if (asymmetric) {

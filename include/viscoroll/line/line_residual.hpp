@@ -87,9 +87,13 @@ concept RollerDrop = requires(const D& d, const Problem& p, Real y) {
 /// The paper's drop h = C2 y^2/2 (Eq. 27), C2 = the problem's c2.
 struct ParabolicDrop {
   template <class Problem, class Real>
-  Real drop(const Problem& p, Real y) const { return p.c2 * y * y / 2; }
+  Real drop(const Problem& p, Real y) const {
+    return p.c2 * y * y / 2;
+  }
   template <class Problem, class Real>
-  Real drop_slope(const Problem& p, Real y) const { return p.c2 * y; }
+  Real drop_slope(const Problem& p, Real y) const {
+    return p.c2 * y;
+  }
 };
 
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,
@@ -191,8 +195,7 @@ class LineResidual {
     if (asymmetric_) {
       for (int k = 0; k < n_ && k < int(s.alpha_odd.size()); ++k)
         x[odd_alpha() + k] = s.alpha_odd[k];
-      for (int k = 0; k <= n_ && k < int(s.beta_odd.size()); ++k)
-        x[odd_beta() + k] = s.beta_odd[k];
+      for (int k = 0; k <= n_ && k < int(s.beta_odd.size()); ++k) x[odd_beta() + k] = s.beta_odd[k];
       x[centre_index()] = s.centre / p_.l_ref;
     }
     return x;
@@ -251,7 +254,6 @@ class LineResidual {
   }
 
  public:
-
   /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/theory.md section 6):
   /// the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
   /// (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
@@ -388,7 +390,7 @@ template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
 requires NodalQuadratureRule<Quadrature, Real> &&
     LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
 auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x, Vector& r,
-                                                           Matrix& jac) const
+                                                                 Matrix& jac) const
     -> bool requires std::same_as<LeadingEdge, ExteriorLeadingEdge> {
   using std::log;
   const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;

@@ -51,11 +51,13 @@ struct LineShape {
     using std::asinh;
     using std::sqrt;
     switch (basis) {
-      case LineBasis::s: return 2 * sqrt(w) - 1;
+      case LineBasis::s:
+        return 2 * sqrt(w) - 1;
       case LineBasis::s_mapped:
         if (mapped_is_identity(scale)) return 2 * sqrt(w) - 1;
         return 2 * asinh(sqrt(w) / scale) / asinh(1 / scale) - 1;
-      default: return 1 - 2 * w;
+      default:
+        return 1 - 2 * w;
     }
   }
   /// w = 1 - t^2 at the expansion variable v.
@@ -68,7 +70,8 @@ struct LineShape {
         const Real s = std::min(Real(1), mapped_s(scale, h));
         return s * s;
       }
-      default: return (1 - v) / 2;
+      default:
+        return (1 - v) / 2;
     }
   }
   /// s = e sinh(h asinh(1/e)) of LineBasis::s_mapped at h = (1 + v)/2 in [0, 1] (h itself where
@@ -114,7 +117,8 @@ struct LineShape {
       values[i] = g(one_minus_t2_at(to, scale, cos(pi * Real(2 * i + 1) / Real(2 * m))));
     for (int k = 0; k < m; ++k) {
       Real sum = 0;
-      for (int i = 0; i < m; ++i) sum += values[i] * cos(pi * Real(k) * Real(2 * i + 1) / Real(2 * m));
+      for (int i = 0; i < m; ++i)
+        sum += values[i] * cos(pi * Real(k) * Real(2 * i + 1) / Real(2 * m));
       c[k] = sum * (k == 0 ? Real(1) : Real(2)) / Real(m);
     }
     return c;

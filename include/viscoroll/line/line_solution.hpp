@@ -3,11 +3,11 @@
 // (line_solver.hpp) returns it; and the warnings of the line theory's domain of validity.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
-#include <algorithm>
 #include <viscoroll/core/along_roller.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
@@ -75,8 +75,7 @@ struct LineSolution {
     out.y_plus = y_plus();
     const Real per_load = f0_per_load();
     for (int k = 1; k <= std::max(stations, 1); ++k) {
-      const Real y =
-          shape.centre + shape.l * (Real(2 * k) / Real(std::max(stations, 1) + 1) - 1);
+      const Real y = shape.centre + shape.l * (Real(2 * k) / Real(std::max(stations, 1) + 1) - 1);
       const auto s = functions(y);
       out.y.push_back(y);
       out.f0.push_back(s.f0 / per_load);
@@ -149,8 +148,8 @@ std::vector<std::string> line_bound_warnings(const LineSolution<Real, Quadrature
     warnings.push_back("l/l0 = " + text(l / s.l_long_term) +
                        " > 1 breaks the bound l <= l0 of the long-term static contact" + advice);
   if (!(b0 >= -tolerance * s.a_long_term))
-    warnings.push_back("b(0)/a0 = " + text(b0 / s.a_long_term) +
-                       " < 0 breaks the bound b(0) >= 0" + advice);
+    warnings.push_back("b(0)/a0 = " + text(b0 / s.a_long_term) + " < 0 breaks the bound b(0) >= 0" +
+                       advice);
   return warnings;
 }
 

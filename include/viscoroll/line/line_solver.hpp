@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 #include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/roots.hpp>
 #include <chrono>
 #include <cmath>
 #include <concepts>
@@ -46,16 +47,15 @@
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
 #include <viscoroll/line/line_spectrum.hpp>
+#include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/material/elastic.hpp>
-#include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/material/prony.hpp>  // compiled mode: PronyRelaxation<double>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/numerics/least_squares_minimum.hpp>
 #include <viscoroll/numerics/levenberg_marquardt.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
-#include <boost/math/tools/roots.hpp>
 
 namespace viscoroll {
 
@@ -101,8 +101,8 @@ class LineSolver {
   /// end, or a static contact that does not converge, is returned not converged with the reason.
   /// Every profile is solved through its ProfileView (roller/profile.hpp), by solve_profile.
   template <RollerProfile Profile>
-  Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr) const
-      requires std::same_as<typename Profile::real_type, Real> {
+  Solution solve(const LineProfileScene<Profile>& scene, const Solution* start = nullptr)
+      const requires std::same_as<typename Profile::real_type, Real> {
     const LineProfileScene<ProfileView<Real>> viewed{
         .roller = ProfileView<Real>(scene.roller), .load = scene.load, .speed = scene.speed};
     return solve_profile(viewed, start);
@@ -114,16 +114,15 @@ class LineSolver {
                          const Solution* start = nullptr) const;
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
-  LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const
-      requires SingleTimeModel<Material> {
+  LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const requires
+      SingleTimeModel<Material> {
     scene.validate();
     const Real c = material_.instantaneous_compliance();
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + memory.f) * c * scene.load);
     return LineResidual<Real, Quadrature>(
         problem(Units{scene.c1, scene.c2, 0, 0}, slow, memory.f, scene.speed * memory.tau),
-        options_.terms, options_.basis,
-        options_.oversampling, Real(options_.quadrature_tolerance));
+        options_.terms, options_.basis, options_.oversampling, Real(options_.quadrature_tolerance));
   }
 
  private:
@@ -278,11 +277,10 @@ class LineSolver {
   /// (LineResidual's).
   template <class Drop = ParabolicDrop, class ColdStart = EllipseStart>
   Solution rolling_from(const LineScene<Real>& scene, const Units& u,
-                        const StaticLineContact<Real>& slow, const LineProblem<Real>& prob,
-                        Real c, const Solution* given, const Drop& drop = {},
-                        const ColdStart& cold = {}, bool asymmetric = false) const {
-    if (given == nullptr)
-      return rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
+                        const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
+                        const Solution* given, const Drop& drop = {}, const ColdStart& cold = {},
+                        bool asymmetric = false) const {
+    if (given == nullptr) return rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
     // The seed in the solver's units (a shape from a far scene may leave the range there).
     Solution seed = *given;
     seed.shape = u.shape_in_units(std::move(seed.shape));
@@ -302,8 +300,8 @@ class LineSolver {
     // residual): the cold start's answer, a root or the certified minimum, without a warning,
     // since the seed had no say in it. Any other stop (outside the domain, a root that is not a
     // contact) is said.
-    const bool no_root = (boost::math::isfinite)(seeded.residual) &&
-                         seeded.residual > root_tolerance();
+    const bool no_root =
+        (boost::math::isfinite)(seeded.residual) && seeded.residual > root_tolerance();
     if (!no_root)
       again.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
                                "): solved again from the cold start");
@@ -333,14 +331,15 @@ class LineSolver {
     using limits = std::numeric_limits<Real>;
     // W = C1 a0^2 / (4 (1 + f) c), plane a0 = slow.a0, formed as its power-of-two scaled self.
     const Binary<Real> cc = binary(c);
-    const Real w_plane = times_power_of_two(
-        u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m), u.curvature + 2 * u.length - cc.e);
+    const Real w_plane = times_power_of_two(u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m),
+                                            u.curvature + 2 * u.length - cc.e);
     const Real a0 = times_power_of_two(slow.a0, u.length);
     if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() &&
         (boost::math::isfinite)(a0) && a0 >= (limits::min)()) {
       try {
         const PlaneSolver<Real, Material> plane(material_);
-        const auto ps = plane.solve(PlaneScene<Real>{.c1 = scene.c1, .load = w_plane, .speed = scene.speed});
+        const auto ps =
+            plane.solve(PlaneScene<Real>{.c1 = scene.c1, .load = w_plane, .speed = scene.speed});
         return {ps.a / a0, ps.b / a0};
       } catch (const std::invalid_argument&) {
         // a number of the plane solution not representable: the scene of order-one numbers
@@ -438,7 +437,8 @@ class LineSolver {
         // O(eps^0.6 / sigma_min); what the estimate decides is its side of sqrt(eps), against
         // 1e-15 ... 1e-11 at ordinary roots and far beyond it at folds (docs/line-solver.md).
         if (out.converged && least_squares && r.cwiseAbs().maxCoeff() <= root_tolerance())
-          estimate = jac_at_root ? detail::newton_correction<Real>(jac, r) : detail::newton_correction<Real>(res, x);
+          estimate = jac_at_root ? detail::newton_correction<Real>(jac, r)
+                                 : detail::newton_correction<Real>(res, x);
         const bool narrow = std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits;
         if (narrow && !(estimate <= sqrt_eps)) {
           out.converged = false;
@@ -455,9 +455,9 @@ class LineSolver {
         if (sol.converged && !(sol.d > 0 && a_centre > 0 && sol.l() > 0)) {
           sol.converged = false;
           sol.reason = "a root of the line equations that is not a contact (d = " +
-                       detail::format_value(sol.d) + ", a at the centre = " +
-                       detail::format_value(a_centre) + ", l = " +
-                       detail::format_value(sol.l()) +
+                       detail::format_value(sol.d) +
+                       ", a at the centre = " + detail::format_value(a_centre) +
+                       ", l = " + detail::format_value(sol.l()) +
                        " in the solver's units of length; each must be positive)";
         }
         if (!narrow && !(estimate <= sqrt_eps))
@@ -478,9 +478,9 @@ class LineSolver {
   }
 
   template <class Residual>
-  Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f,
-                Real vtau, const Residual& res, const Vector& x,
-                const Vector& r, bool converged, std::string reason, int iterations) const {
+  Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
+                const Residual& res, const Vector& x, const Vector& r, bool converged,
+                std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
     Solution sol = solution(u, slow, c, f, vtau, res.shape(x), res.penetration(x));
@@ -506,17 +506,16 @@ class LineSolver {
   }
 
   template <class Residual>
-  Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c,
-                   Real f, Real vtau, const Residual& res, const Vector& x,
-                   const char* reason, int iterations) const {
+  Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
+                   const Residual& res, const Vector& x, const char* reason, int iterations) const {
     Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
     return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
   }
 
-  /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid (`bounds`),
-  /// the bounds of the rolling contact (line_bound_warnings, to the root tolerance, plus the
-  /// residual of a least-squares minimum, which meets the equations only to it); for a profile
-  /// (B2), (B3) are not derived (docs/theory.md (RP10)).
+  /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid
+  /// (`bounds`), the bounds of the rolling contact (line_bound_warnings, to the root tolerance,
+  /// plus the residual of a least-squares minimum, which meets the equations only to it); for a
+  /// profile (B2), (B3) are not derived (docs/theory.md (RP10)).
   static void add_warnings(Solution& sol, const Units& u, bool bounds = true) {
     for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
       sol.warnings.push_back(std::move(w));
@@ -541,8 +540,8 @@ class LineSolver {
     using std::pow;
     constexpr bool ellipsoid = std::same_as<Scene, LineScene<Real>>;
     scene.validate();
-    detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1,
-                    "basis", int(options_.basis),
+    detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1, "basis",
+                    int(options_.basis),
                     "LineBasis::t_squared with oversampling 1 for a material with a spectrum");
     const Real sqrt_eps = std::sqrt(std::numeric_limits<Real>::epsilon());
     const Real c = material_.instantaneous_compliance();
@@ -550,13 +549,17 @@ class LineSolver {
     Real creep_ratio = 0;
     for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
     const Real c1 = [&] {
-      if constexpr (ellipsoid) return scene.c1;
-      else return Real(scene.roller.c1());
+      if constexpr (ellipsoid)
+        return scene.c1;
+      else
+        return Real(scene.roller.c1());
     }();
     const auto inputs = [&] {
       std::string roller;
-      if constexpr (ellipsoid) roller = ", c2 = " + detail::format_value(scene.c2);
-      else roller = " (a roller profile)";
+      if constexpr (ellipsoid)
+        roller = ", c2 = " + detail::format_value(scene.c2);
+      else
+        roller = " (a roller profile)";
       return "c1 = " + detail::format_value(c1) + roller +
              ", load = " + detail::format_value(scene.load) +
              ", speed = " + detail::format_value(scene.speed) +
@@ -611,7 +614,7 @@ class LineSolver {
       LineSolution<Real, Quadrature> one = [&] {
         if (merged.empty()) {
           const LineSolver<Real, Elastic<Real>, Quadrature> elastic(Elastic<Real>(mu, Real(0)),
-                                                                   options_);
+                                                                    options_);
           const auto e = elastic.solve(scene);
           return LineSolution<Real, Quadrature>(e);
         }
@@ -634,7 +637,8 @@ class LineSolver {
       sol.warnings = one.warnings;
       sol.load_compliance = one.f0_per_load();
       if constexpr (ellipsoid) {
-        const auto full = static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
+        const auto full =
+            static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
         sol.a_long_term = full.a0;
         sol.l_long_term = full.l;
         sol.d_long_term = full.d;
@@ -776,8 +780,9 @@ class LineSolver {
       if (sol.converged && !(sol.d > 0 && shape.a(shape.centre) > 0 && shape.l > 0)) {
         sol.converged = false;
         sol.root = false;
-        sol.reason = "a root of the line equations that is not a contact (d, a at the centre or l "
-                     "not positive)";
+        sol.reason =
+            "a root of the line equations that is not a contact (d, a at the centre or l "
+            "not positive)";
       }
       if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
       if (sol.converged && !sol.root) sol.warnings.push_back(detail::minimum_warning(rmax));
@@ -820,55 +825,55 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
   if constexpr (!SingleTimeModel<Material>) {
     return solve_spectrum(scene, start);
   } else {
-  scene.validate();
-  // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic): the
-  // strips' G (36) and the leading-edge condition's kernel are formed from V tau and f.
-  const Real c = material_.instantaneous_compliance();
-  const PronyTerm<Real> memory = detail::single_memory_term(material_);
-  const Real f = memory.f;
-  const auto inputs = [&] {
-    return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
-           ", load = " + detail::format_value(scene.load) +
-           ", speed = " + detail::format_value(scene.speed) +
-           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-           ", tau = " + detail::format_value(memory.tau);
-  };
-  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-  // Scaling (docs/theory.md, "Scaling"): C1, C2 in the unit of curvature of C1's power of two,
-  // lengths in a power of two near a0; every product below rounds as in the caller's units.
-  const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
-  const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + f);
-  detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
-  const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
-  // Long-term static contact, compliance (1 + f) c, Eq. (47) with (52).
-  const auto slow_units = static_line_contact_in_units<Real>(
-      k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
-  const Units u{k1.m, c2, k1.e, slow_units.length};
-  const StaticLineContact<Real> slow = slow_units.contact;
-  const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-  const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
-  const Real eps = std::numeric_limits<Real>::epsilon();
-  Solution sol = [&] {
-    if constexpr (Material::is_viscoelastic) {
-      if (f > 0 && vtau > 0) {
-        if (strip_is_glassy(vtau, f, slow.a0)) {
-          // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
-          const auto fast = static_line_contact_in_units<Real>(
-              k1.m, c2, {cc.m * load.m, cc.e + load.e}, k1.e);
-          const int shift = fast.length - u.length;  // to the units of the long-term contact
-          const StaticLineContact<Real> glassy{times_power_of_two(fast.contact.a0, shift),
-                                               times_power_of_two(fast.contact.l, shift),
-                                               times_power_of_two(fast.contact.d, 2 * shift)};
-          // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
-          return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
+    scene.validate();
+    // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic): the
+    // strips' G (36) and the leading-edge condition's kernel are formed from V tau and f.
+    const Real c = material_.instantaneous_compliance();
+    const PronyTerm<Real> memory = detail::single_memory_term(material_);
+    const Real f = memory.f;
+    const auto inputs = [&] {
+      return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
+             ", load = " + detail::format_value(scene.load) +
+             ", speed = " + detail::format_value(scene.speed) +
+             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+             ", tau = " + detail::format_value(memory.tau);
+    };
+    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+    // Scaling (docs/theory.md, "Scaling"): C1, C2 in the unit of curvature of C1's power of two,
+    // lengths in a power of two near a0; every product below rounds as in the caller's units.
+    const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
+    const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + f);
+    detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
+    const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
+    // Long-term static contact, compliance (1 + f) c, Eq. (47) with (52).
+    const auto slow_units = static_line_contact_in_units<Real>(
+        k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
+    const Units u{k1.m, c2, k1.e, slow_units.length};
+    const StaticLineContact<Real> slow = slow_units.contact;
+    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    Solution sol = [&] {
+      if constexpr (Material::is_viscoelastic) {
+        if (f > 0 && vtau > 0) {
+          if (strip_is_glassy(vtau, f, slow.a0)) {
+            // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
+            const auto fast =
+                static_line_contact_in_units<Real>(k1.m, c2, {cc.m * load.m, cc.e + load.e}, k1.e);
+            const int shift = fast.length - u.length;  // to the units of the long-term contact
+            const StaticLineContact<Real> glassy{times_power_of_two(fast.contact.a0, shift),
+                                                 times_power_of_two(fast.contact.l, shift),
+                                                 times_power_of_two(fast.contact.d, 2 * shift)};
+            // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
+            return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
+          }
+          if (vtau > eps * slow.a0)
+            return rolling_from(scene, u, slow, problem(u, slow, f, vtau), c, start);
         }
-        if (vtau > eps * slow.a0)
-          return rolling_from(scene, u, slow, problem(u, slow, f, vtau), c, start);
       }
-    }
-    return closed_form(u, slow, slow, c, f, "static (closed form)");
-  }();
-  return detail::in_caller_units(std::move(sol), u, scene.c1, inputs);
+      return closed_form(u, slow, slow, c, f, "static (closed form)");
+    }();
+    return detail::in_caller_units(std::move(sol), u, scene.c1, inputs);
   }
 }
 
@@ -882,75 +887,79 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
   if constexpr (!SingleTimeModel<Material>) {
     return solve_spectrum(scene, start);
   } else {
-  scene.validate();
-  const Profile& roller = scene.roller;
-  const Real c = material_.instantaneous_compliance();
-  const PronyTerm<Real> memory = detail::single_memory_term(material_);
-  const Real f = memory.f;
-  const Real c1 = roller.c1();
-  // A drop that is not even (a tilt): the contact [c - l, c + l] with odd parts ((RP6), (RP7)).
-  const bool asymmetric = !roller.symmetric();
-  const auto inputs = [&] {
-    return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
-           ", speed = " + detail::format_value(scene.speed) +
-           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-           ", tau = " + detail::format_value(memory.tau) + ", a roller profile";
-  };
-  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-  const StaticProfileContact<Real> slow_c =
-      static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
-  if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
-  const Real a0_caller = slow_c.a(slow_c.centre());
-  const Units u = Units::profile(c1, a0_caller);
-  const int d_unit = u.curvature + 2 * u.length;
-  const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
-    return profile_in_units(s, u, a0_caller, b_over, asymmetric);
-  };
-  const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
-  const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
-  const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-  const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
-  const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
-                                   const char* reason) {
-    Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
-    sol.reason = reason;
-    add_warnings(sol, u, false);
-    return sol;
-  };
-  Solution sol = [&] {
-    if constexpr (Material::is_viscoelastic) {
-      if (f > 0 && vtau > 0) {
-        if (strip_is_glassy(vtau, f, slow.a0)) {
-          const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
-          if (fast.converged)
-            return static_solution(in_units(fast, Real(0)), Real(0),
-                                   "glassy limit (static profile contact)");
-        }
-        if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
-          const LineProblem<Real> prob{u.c1, Real(0), vtau, f, slow.a0, slow.l,
-                                       times_power_of_two((1 + f) * c * scene.load,
-                                                          -(d_unit + u.length))};
-          // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
-          // the long-term one's, b the plane's.
-          const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
-            if (ps.a == 1) return in_units(slow_c, ps.b);
-            const auto s = static_profile_contact(roller, (1 + f) * c * scene.load * ps.a * ps.a,
-                                                  profile_static_terms);
-            return in_units(s.converged ? s : slow_c, ps.b);
-          };
-          const LineScene<Real> plane{.c1 = c1, .c2 = Real(0), .load = scene.load,
-                                      .speed = scene.speed};
-          return rolling_from(plane, u, slow, prob, c, start,
-                              ProfileDrop<Profile>(roller, u.length, u.curvature), cold,
-                              asymmetric);
+    scene.validate();
+    const Profile& roller = scene.roller;
+    const Real c = material_.instantaneous_compliance();
+    const PronyTerm<Real> memory = detail::single_memory_term(material_);
+    const Real f = memory.f;
+    const Real c1 = roller.c1();
+    // A drop that is not even (a tilt): the contact [c - l, c + l] with odd parts ((RP6), (RP7)).
+    const bool asymmetric = !roller.symmetric();
+    const auto inputs = [&] {
+      return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
+             ", speed = " + detail::format_value(scene.speed) +
+             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+             ", tau = " + detail::format_value(memory.tau) + ", a roller profile";
+    };
+    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+    const StaticProfileContact<Real> slow_c =
+        static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
+    if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
+    const Real a0_caller = slow_c.a(slow_c.centre());
+    const Units u = Units::profile(c1, a0_caller);
+    const int d_unit = u.curvature + 2 * u.length;
+    const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
+      return profile_in_units(s, u, a0_caller, b_over, asymmetric);
+    };
+    const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
+    const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
+    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
+    const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
+                                     const char* reason) {
+      Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
+      sol.reason = reason;
+      add_warnings(sol, u, false);
+      return sol;
+    };
+    Solution sol = [&] {
+      if constexpr (Material::is_viscoelastic) {
+        if (f > 0 && vtau > 0) {
+          if (strip_is_glassy(vtau, f, slow.a0)) {
+            const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
+            if (fast.converged)
+              return static_solution(in_units(fast, Real(0)), Real(0),
+                                     "glassy limit (static profile contact)");
+          }
+          if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
+            const LineProblem<Real> prob{
+                u.c1,
+                Real(0),
+                vtau,
+                f,
+                slow.a0,
+                slow.l,
+                times_power_of_two((1 + f) * c * scene.load, -(d_unit + u.length))};
+            // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
+            // the long-term one's, b the plane's.
+            const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
+              if (ps.a == 1) return in_units(slow_c, ps.b);
+              const auto s = static_profile_contact(roller, (1 + f) * c * scene.load * ps.a * ps.a,
+                                                    profile_static_terms);
+              return in_units(s.converged ? s : slow_c, ps.b);
+            };
+            const LineScene<Real> plane{
+                .c1 = c1, .c2 = Real(0), .load = scene.load, .speed = scene.speed};
+            return rolling_from(plane, u, slow, prob, c, start,
+                                ProfileDrop<Profile>(roller, u.length, u.curvature), cold,
+                                asymmetric);
+          }
         }
       }
-    }
-    return static_solution(long_term, f,
-                           "static (static profile contact)");
-  }();
-  check_body_end(sol, roller, u);
-  return detail::in_caller_units(std::move(sol), u, c1, inputs);
+      return static_solution(long_term, f, "static (static profile contact)");
+    }();
+    check_body_end(sol, roller, u);
+    return detail::in_caller_units(std::move(sol), u, c1, inputs);
   }
 }
 

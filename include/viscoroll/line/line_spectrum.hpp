@@ -15,10 +15,11 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <boost/math/special_functions/fpclassify.hpp>
 #include <algorithm>
+#include <boost/math/special_functions/fpclassify.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,7 +32,6 @@
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
-#include <optional>
 
 namespace viscoroll {
 
@@ -77,8 +77,7 @@ struct LineSpectrumMoments {
 /// `Drop`: the roller's h(y) in (34) (a RollerDrop, line_residual.hpp; the paper's C2 y^2/2 by
 /// default).
 template <RealScalar Real, class Quadrature, class Drop = ParabolicDrop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    RollerDrop<Drop, Real, LineSpectrumProblem<Real>>
+requires NodalQuadratureRule<Quadrature, Real> && RollerDrop<Drop, Real, LineSpectrumProblem<Real>>
 class LineSpectrumResidual {
  public:
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
@@ -183,7 +182,8 @@ class LineSpectrumResidual {
     for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
     for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
     for (int k = 0; k <= n_ && k < int(mo.gamma.size()); ++k) x[2 * n_ + 1 + k] = mo.gamma[k];
-    for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k) x[3 * n_ + 2 + k] = mo.kappa[k] * ratio;
+    for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k)
+      x[3 * n_ + 2 + k] = mo.kappa[k] * ratio;
     x[4 * n_ + 3] = log(s.l / p_.l_ref);
     x[4 * n_ + 4] = d / (p_.c1 * p_.a_ref * p_.a_ref);
     if (asymmetric_) {
@@ -205,8 +205,7 @@ class LineSpectrumResidual {
   struct Functions {
     Real a, b, gamma, kappa, f0;
   };
-  Functions functions(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo,
-                      Real y) const {
+  Functions functions(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y) const {
     const Real a = s.a(y);
     if (!(a > 0)) return {Real(0), s.b(y), Real(0), Real(0), Real(0)};
     const Real u = LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(y));
@@ -343,8 +342,8 @@ class LineSpectrumResidual {
       // (S12): the right sides are (L6) at lambda_k of Q_k, the line terms' on one x-grid
       // (S18).
       for (std::size_t c = 0; c < line_.size(); ++c) qs[c] = q(here, line_[c]);
-      detail::exterior_right_terms<Quadrature>(nd, x0, line_lambda_, f0s, bks, qs, line_right,
-                                               work, jac ? &slopes : nullptr);
+      detail::exterior_right_terms<Quadrature>(nd, x0, line_lambda_, f0s, bks, qs, line_right, work,
+                                               jac ? &slopes : nullptr);
       std::fill(right.begin(), right.end(), Real(0));
       for (std::size_t c = 0; c < line_.size(); ++c) right[line_[c]] = line_right[c];
       if (jac) {
@@ -381,8 +380,8 @@ class LineSpectrumResidual {
       const Real a = here.a, b = st.b;
       // (34) with (S13): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2] = -C1 a^2/4 - C1 (Pi_g'(0) + e2)
       //   - C1 b (b - 2 Lambda_1)/2 - C2 y^2/2 + d, with the strip's b.
-      const Real rhs34 =
-          -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 - drop_.drop(p_, y) + d;
+      const Real rhs34 = -c1 * a * a / 4 - c1 * st.pig1 - c1 * b * (b - 2 * lambda_sum_) / 2 -
+                         drop_.drop(p_, y) + d;
       r[i] = (lhs34 - rhs34) / (c1 * ar * ar);
       r[m + i] = (st.b - here.b) / ar;
       r[2 * m + i] = st.g0 / (a * a) - here.gamma;
@@ -394,7 +393,8 @@ class LineSpectrumResidual {
                                  int row) {
         for (std::size_t k = 0; k < mt; ++k)
           if (line_term_[k] && by_right[k] != 0)
-            for (int c = 0; c < nu; ++c) J(row, c) += scale * by_right[k] * dright(Eigen::Index(k), c);
+            for (int c = 0; c < nu; ++c)
+              J(row, c) += scale * by_right[k] * dright(Eigen::Index(k), c);
         for (int c = 0; c < n_; ++c) J(row, c) += scale * by_a * a * ti[c];
         if (asymmetric_)
           for (int c = 0; c < n_; ++c) J(row, odd() + c) += scale * by_a * a * ti[n_ + 1 + c];
@@ -469,20 +469,20 @@ class LineSpectrumResidual {
 /// (`single`); with none, the static closed form.
 template <RealScalar Real, class Quadrature>
 struct LineSpectrumSolution {
-  LineShape<Real> shape;          ///< a(y), b(y), l
+  LineShape<Real> shape;              ///< a(y), b(y), l
   LineSpectrumMoments<Real> moments;  ///< gamma = G0/a^2 and kappa/a_ref (two or more terms)
-  Real d;                         ///< penetration (Eq. 27)
-  Real a_long_term;               ///< a0: half width at y = 0 of the static contact, c (1 + F)
-  Real l_long_term;               ///< l0: its half length
-  Real d_long_term;               ///< its penetration
-  Real chi;                       ///< rolling-friction coefficient C1 xbar (Eq. 51), (S15)
-  bool converged;                 ///< the iteration met its tolerance (true for a closed form)
-  bool root;                      ///< max |r| <= 64 sqrt(eps)
-  std::string reason;             ///< why it stopped
-  int iterations;                 ///< Levenberg-Marquardt iterations (0 for a closed form)
-  Real residual;                  ///< max |r| of the scaled equations
+  Real d;                             ///< penetration (Eq. 27)
+  Real a_long_term;                   ///< a0: half width at y = 0 of the static contact, c (1 + F)
+  Real l_long_term;                   ///< l0: its half length
+  Real d_long_term;                   ///< its penetration
+  Real chi;                           ///< rolling-friction coefficient C1 xbar (Eq. 51), (S15)
+  bool converged;                     ///< the iteration met its tolerance (true for a closed form)
+  bool root;                          ///< max |r| <= 64 sqrt(eps)
+  std::string reason;                 ///< why it stopped
+  int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
+  Real residual;                      ///< max |r| of the scaled equations
   std::vector<std::string> warnings;
-  int active_terms;               ///< memory terms solved for at this speed
+  int active_terms;  ///< memory terms solved for at this speed
   Real c1;
   /// The long-term compliance of the terms solved for, c (1 + relaxed)(1 + F') (Eq. 47 with
   /// (52): F0 integrates to it times the load); f0_per_load() reads it.

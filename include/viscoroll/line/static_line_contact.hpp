@@ -58,8 +58,8 @@ Real static_line_aspect(Real ratio) {
   while (h(hi) > 0) hi *= 2;
   std::uintmax_t iterations = 200;
   const auto bracket = boost::math::tools::toms748_solve(
-      h, rho_min, hi, boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 1),
-      iterations);
+      h, rho_min, hi,
+      boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 1), iterations);
   return (bracket.first + bracket.second) / 2;
 }
 

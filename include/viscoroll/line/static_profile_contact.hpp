@@ -16,10 +16,11 @@
 // system, solved by Newton's method with an analytic Jacobian and backtracking.
 //
 // In t, F0 = (C1 a_ref^2/4) omega(t) exp(2 g(t)) is analytic on [-1, 1], and the finite part is
-// scale free, FP[F0](y) = int_{-1}^{1} (F(t') - F(t))/|t' - t| dt' (dy' = l dt', |y' - y| = l|t' - t|):
-// F is interpolated at M + 1 Chebyshev-Lobatto points, and FP of each T_n is a polynomial in
-// closed form (G4), so that FP at the collocation points and the load are fixed matrices applied to
-// the values of F; M doubles until F's Chebyshev tail is below eps^(2/3).
+// scale free, FP[F0](y) = int_{-1}^{1} (F(t') - F(t))/|t' - t| dt'
+// (dy' = l dt', |y' - y| = l|t' - t|): F is interpolated at M + 1 Chebyshev-Lobatto points, and
+// FP of each T_n is a polynomial in closed form (G4), so that FP at the collocation points and the
+// load are fixed matrices applied to the values of F; M doubles until F's Chebyshev tail is below
+// eps^(2/3).
 #pragma once
 
 #include <Eigen/Dense>
@@ -50,8 +51,8 @@ namespace viscoroll {
 ///     (M);
 ///   - `warnings`: the contact reaches the roller's body end (outside the theory: the result is
 ///     then not converged), or is not slender (l/max a < 3).
-/// omega(t) of (G3) with end layer e: 1 - t^2 for e = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 + e^2),
-/// which rises from the ends over 1 - t^2 ~ e^2 to 1 (a flat contact with short ends).
+/// omega(t) of (G3) with end layer e: 1 - t^2 for e = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 +
+/// e^2), which rises from the ends over 1 - t^2 ~ e^2 to 1 (a flat contact with short ends).
 template <RealScalar Real>
 Real static_profile_weight(Real e, Real t) {
   const Real w = (1 - t) * (1 + t);
@@ -145,13 +146,13 @@ struct StaticProfileMatrices {
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
   int n, m;
-  Vector tc;   ///< collocation points, the roots of T_{N+2}
-  Vector xl;   ///< interpolation points cos(pi j/M), j = 0..M
-  Matrix fp;   ///< FP at tc from the values at xl, (N + 2) x (M + 1)
-  Vector q;    ///< int_{-1}^{1} from the values at xl (Clenshaw-Curtis)
-  Matrix tail; ///< the last two Chebyshev coefficients from the values at xl, 2 x (M + 1)
-  Matrix tx;   ///< T_k(xl_j), (M + 1) x N
-  Matrix tt;   ///< T_k(tc_i), (N + 2) x N
+  Vector tc;    ///< collocation points, the roots of T_{N+2}
+  Vector xl;    ///< interpolation points cos(pi j/M), j = 0..M
+  Matrix fp;    ///< FP at tc from the values at xl, (N + 2) x (M + 1)
+  Vector q;     ///< int_{-1}^{1} from the values at xl (Clenshaw-Curtis)
+  Matrix tail;  ///< the last two Chebyshev coefficients from the values at xl, 2 x (M + 1)
+  Matrix tx;    ///< T_k(xl_j), (M + 1) x N
+  Matrix tt;    ///< T_k(tc_i), (N + 2) x N
 
   StaticProfileMatrices(int terms, int m_points) : n(terms), m(m_points) {
     using std::cos;
@@ -205,10 +206,10 @@ struct StaticProfileMatrices {
 
 /// The static line contact of `profile` under compliance_load = (1 - nu)/(2 pi mu) * P > 0 (Eq.
 /// (47)), with N = terms coefficients in (G3) (1 <= terms <= 64; the default 12 keeps the points
-/// more than a half width apart for contacts 15 or more half widths long, docs/theory.md (G5)). Throws
-/// std::invalid_argument
-/// naming the parameter; a Newton iteration that does not converge, or a contact that reaches the
-/// roller's body end, is returned with converged == false, the reason and (for the end) a warning.
+/// more than a half width apart for contacts 15 or more half widths long, docs/theory.md (G5)).
+/// Throws std::invalid_argument naming the parameter; a Newton iteration that does not converge, or
+/// a contact that reaches the roller's body end, is returned with converged == false, the reason
+/// and (for the end) a warning.
 template <RollerProfile P>
 StaticProfileContact<typename P::real_type> static_profile_contact(
     const P& profile, typename P::real_type compliance_load, int terms = 12) {
@@ -243,9 +244,9 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   // A length scale: the ellipsoid's a0^3 rho = 3 compliance load / C1.
   const Real len0 = cbrt(compliance_load / c1);
   Real y0 = (boost::math::isfinite)(ymin) && (boost::math::isfinite)(ymax) ? (ymin + ymax) / 2
-            : inside(Real(0))                                           ? Real(0)
-            : (boost::math::isfinite)(ymin)                             ? ymin + len0
-                                                                        : ymax - len0;
+            : inside(Real(0))                                              ? Real(0)
+            : (boost::math::isfinite)(ymin)                                ? ymin + len0
+                                                                           : ymax - len0;
   const auto clamp_in = [&](Real y) {
     // Keeps y strictly inside the body (by a relative 1e-9 of the step scale).
     const Real margin = 1e-9 * (abs(y) + len0);
@@ -502,8 +503,8 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
       evaluate(mat, x, r, &jac, &tail);
       const Real previous = rnorm;
       rnorm = r.template lpNorm<Eigen::Infinity>();
-      if (rnorm <= tolerance && (mu * step.template lpNorm<Eigen::Infinity>() < 1e3 * eps ||
-                                 !(rnorm < previous / 2))) {
+      if (rnorm <= tolerance &&
+          (mu * step.template lpNorm<Eigen::Infinity>() < 1e3 * eps || !(rnorm < previous / 2))) {
         converged = true;
         break;
       }
@@ -535,9 +536,9 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     // half length of an end; elsewhere a blocked step is only the iteration's failure.
     const bool near_end = out.y_minus - ymin < l / 4 || ymax - out.y_plus < l / 4;
     if ((blocked && near_end) || clip_minus || clip_plus) {
-      out.warnings.push_back(
-          "the contact reaches the roller's body end (y_min = " + text(ymin) +
-          ", y_max = " + text(ymax) + "): outside the line theory, no solution is returned");
+      out.warnings.push_back("the contact reaches the roller's body end (y_min = " + text(ymin) +
+                             ", y_max = " + text(ymax) +
+                             "): outside the line theory, no solution is returned");
       return fail("the contact reaches the roller's body end");
     }
     // A contact not much longer than wide is outside the line theory, which needs l >> a: its
@@ -545,10 +546,10 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     const Real slenderness = l / a_ref;
     return fail("Newton's method stopped at residual " + text(rnorm) + " above the tolerance " +
                 text(tolerance) + (m > 1024 ? " (F0 not resolved by 1025 points)" : "") +
-                (slenderness < 3 ? "; the contact found is not slender (half length " +
-                                       text(l) + ", " + text(slenderness) +
-                                       " times the half width): outside the line theory"
-                                 : std::string()));
+                (slenderness < 3
+                     ? "; the contact found is not slender (half length " + text(l) + ", " +
+                           text(slenderness) + " times the half width): outside the line theory"
+                     : std::string()));
   }
   if (tail > tail_tolerance)
     return fail("F0 is not resolved by 1025 interpolation points (Chebyshev tail " + text(tail) +

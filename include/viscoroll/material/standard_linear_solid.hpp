@@ -22,7 +22,8 @@ class StandardLinearSolid {
   static constexpr int memory_term_count = 1;
 
   /// Throws std::invalid_argument unless mu_d > 0, -1 < nu <= 0.5, f >= 0, tau >= 0, all finite.
-  StandardLinearSolid(Real mu_d, Real nu, Real f, Real tau) : mu_d_(mu_d), nu_(nu), f_(f), tau_(tau) {
+  StandardLinearSolid(Real mu_d, Real nu, Real f, Real tau)
+      : mu_d_(mu_d), nu_(nu), f_(f), tau_(tau) {
     detail::require_positive("mu_d", mu_d);
     detail::require_poisson_ratio(nu);
     detail::require_non_negative("f", f);

@@ -25,8 +25,8 @@ namespace viscoroll::numerics {
 /// Levenberg-Marquardt from x, with r = problem(x) on entry; x and r hold the last accepted
 /// iterate on return. Steps solve (J^T J + mu diag(J^T J)) s = -J^T r (Marquardt's scaling, the
 /// column norms floored at 1e-12), mu from options.initial_damping (1e-3), times 8 per rejected
-/// try (40 tries with a fresh Jacobian, 4 with an updated one), divided by 4 per accepted step (floor 1e-12); a step is
-/// accepted when r is defined there and |r|^2 falls. Stops:
+/// try (40 tries with a fresh Jacobian, 4 with an updated one), divided by 4 per accepted step
+/// (floor 1e-12); a step is accepted when r is defined there and |r|^2 falls. Stops:
 /// - converged: max |r| <= root_tolerance after a step below eps^0.6 (1 + max |x|) taken with a
 ///   fresh Jacobian or one refreshed below that tolerance; or max |r| <= 4 eps (rounding level);
 /// - minimum (not converged): no descent step with a fresh Jacobian; |r|^2 down by less than 5%

@@ -235,7 +235,8 @@ class PlaneSolver {
   /// (strip_is_glassy: dropped, its creep never starts) or active; the active terms' relaxation
   /// lengths are the zeros of (R7), and (S5)-(S8) with the load (S8) give a by TOMS 748 in
   /// [glassy, long-term] Hertz widths of the active problem.
-  Solution solve_spectrum(const PlaneScene<Real>& scene) const requires(!SingleTimeModel<Material>) {
+  Solution solve_spectrum(const PlaneScene<Real>& scene) const
+      requires(!SingleTimeModel<Material>) {
     scene.validate();
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
@@ -260,8 +261,8 @@ class PlaneSolver {
     const Real a_glassy = a0.m / sqrt(1 + creep_ratio);
     // Classify the terms at this speed (lengths in units); relaxed ones folded into the
     // compliance, c (1 + relaxed), the active f scaled by 1/(1 + relaxed) (R6b).
-    auto classes = detail::classify_spectrum(terms, scene.speed, units.length, eps * a_glassy,
-                                             a0.m, creep_ratio);
+    auto classes = detail::classify_spectrum(terms, scene.speed, units.length, eps * a_glassy, a0.m,
+                                             creep_ratio);
     const Real relaxed = classes.relaxed, glassy_f = classes.glassy;
     auto& active = classes.active;
     const Real c_eff = cc.m * (1 + relaxed);
@@ -273,8 +274,8 @@ class PlaneSolver {
     if (active.empty()) {
       s.a = a0_eff;
       s.f0 = c1.m * a0_eff * a0_eff / 4;
-      s.hertz.emplace_back(units, c1.m, a0_eff, Real(0), Real(0), Real(0),
-                           creep_ratio - glassy_f, cc.m);
+      s.hertz.emplace_back(units, c1.m, a0_eff, Real(0), Real(0), Real(0), creep_ratio - glassy_f,
+                           cc.m);
     } else {
       const auto merged = detail::merge_spectrum(std::move(active));
       SpectrumLengths<Real> lengths;
@@ -357,60 +358,60 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
   if constexpr (!SingleTimeModel<Material>) {
     return solve_spectrum(scene);
   } else {
-  scene.validate();
-  // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic).
-  const Real c = material_.instantaneous_compliance();
-  const PronyTerm<Real> memory = detail::single_memory_term(material_);
-  const Real f = memory.f;
-  const auto inputs = [&] {
-    return "c1 = " + detail::format_value(scene.c1) +
-           ", load = " + detail::format_value(scene.load) +
-           ", speed = " + detail::format_value(scene.speed) +
-           ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-           ", tau = " + detail::format_value(memory.tau);
-  };
-  detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-  // Scaling (docs/theory.md): lengths in units of a power of two near a0, C1 and c in units of
-  // their own powers of two; every product below rounds as in the caller's units.
-  const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
-  const auto creep = binary<Real>(1 + f);
-  // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
-  const auto a0 =
-      binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
-  const StripUnits units{a0.e, c1.e, cc.e};
-  Solution s = [&] {
-    if constexpr (Material::is_viscoelastic) {
-      const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-      const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - units.length);
-      if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0.m) {
-        if (!glassy(vtau, f, a0.m)) return rolling(units, c1.m, cc.m, f, vtau, a0.m);
-        // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
-        const auto a = binary_sqrt<Real>(4 * cc.m * load.m / c1.m, cc.e + load.e - c1.e);
-        const Real a_glassy = times_power_of_two(a.m, a.e - units.length);
-        return static_solution(units, c1.m, a_glassy, a0.m, cc.m, Real(0));
+    scene.validate();
+    // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic).
+    const Real c = material_.instantaneous_compliance();
+    const PronyTerm<Real> memory = detail::single_memory_term(material_);
+    const Real f = memory.f;
+    const auto inputs = [&] {
+      return "c1 = " + detail::format_value(scene.c1) +
+             ", load = " + detail::format_value(scene.load) +
+             ", speed = " + detail::format_value(scene.speed) +
+             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
+             ", tau = " + detail::format_value(memory.tau);
+    };
+    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
+    // Scaling (docs/theory.md): lengths in units of a power of two near a0, C1 and c in units of
+    // their own powers of two; every product below rounds as in the caller's units.
+    const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
+    const auto creep = binary<Real>(1 + f);
+    // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
+    const auto a0 =
+        binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
+    const StripUnits units{a0.e, c1.e, cc.e};
+    Solution s = [&] {
+      if constexpr (Material::is_viscoelastic) {
+        const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
+        const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - units.length);
+        if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0.m) {
+          if (!glassy(vtau, f, a0.m)) return rolling(units, c1.m, cc.m, f, vtau, a0.m);
+          // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
+          const auto a = binary_sqrt<Real>(4 * cc.m * load.m / c1.m, cc.e + load.e - c1.e);
+          const Real a_glassy = times_power_of_two(a.m, a.e - units.length);
+          return static_solution(units, c1.m, a_glassy, a0.m, cc.m, Real(0));
+        }
       }
-    }
-    // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic:
-    // Hertz with the long-term compliance, no Bessel work.
-    return static_solution(units, c1.m, a0.m, a0.m, cc.m, f);
-  }();
-  // The solution in the caller's units: each number zero or normal and finite, else an error
-  // naming the inputs (docs/errors.md).
-  const int length = units.length, area = 2 * length, curvature = units.curvature;
-  const auto in = [&](Real x, int exponent, std::string_view what) {
-    return detail::representable(x, exponent, what, inputs);
-  };
-  const Real mean_pressure = load.m / (2 * s.a);
-  s.a_long_term =
-      in(s.a_long_term, length, "the long-term half width a0 = sqrt(4 c (1+f) load/c1)");
-  s.a = in(s.a, length, "the contact half width a");
-  s.b = in(s.b, length, "the offset b of the contact");
-  s.g = in(s.g, area, "G of Eq. (36)");
-  s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
-  s.q = in(s.q, curvature + area, "Q of Eq. (46)");
-  s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
-  in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
-  return s;
+      // Static (V tau <= eps a0: a, b and chi move by less than eps/2 of a0, (P6)) or elastic:
+      // Hertz with the long-term compliance, no Bessel work.
+      return static_solution(units, c1.m, a0.m, a0.m, cc.m, f);
+    }();
+    // The solution in the caller's units: each number zero or normal and finite, else an error
+    // naming the inputs (docs/errors.md).
+    const int length = units.length, area = 2 * length, curvature = units.curvature;
+    const auto in = [&](Real x, int exponent, std::string_view what) {
+      return detail::representable(x, exponent, what, inputs);
+    };
+    const Real mean_pressure = load.m / (2 * s.a);
+    s.a_long_term =
+        in(s.a_long_term, length, "the long-term half width a0 = sqrt(4 c (1+f) load/c1)");
+    s.a = in(s.a, length, "the contact half width a");
+    s.b = in(s.b, length, "the offset b of the contact");
+    s.g = in(s.g, area, "G of Eq. (36)");
+    s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
+    s.q = in(s.q, curvature + area, "Q of Eq. (46)");
+    s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
+    in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
+    return s;
   }
 }
 

@@ -33,7 +33,7 @@ namespace viscoroll {
 ///     representation applies; otherwise it adds the odd parts and the contact's centre).
 template <class P>
 concept RollerProfile = RealScalar<typename P::real_type> &&
-                        requires(const P& p, typename P::real_type y) {
+    requires(const P& p, typename P::real_type y) {
   { p.c1() } -> std::convertible_to<typename P::real_type>;
   { p.drop(y) } -> std::convertible_to<typename P::real_type>;
   { p.drop_slope(y) } -> std::convertible_to<typename P::real_type>;
@@ -176,7 +176,10 @@ class TabulatedProfile {
   /// Throws unless radius > 0, y and h have the same size >= 4, y strictly increasing and
   /// every value finite (named "y[3]", "h[0]").
   TabulatedProfile(Real radius, std::vector<Real> y, std::vector<Real> h)
-      : radius_(radius), y_(std::move(y)), h_(std::move(h)), symmetric_(is_symmetric(y_, h_)),
+      : radius_(radius),
+        y_(std::move(y)),
+        h_(std::move(h)),
+        symmetric_(is_symmetric(y_, h_)),
         spline_(checked(y_, h_.size()), std::vector<Real>(h_)) {
     detail::require_positive("radius", radius);
   }
@@ -252,13 +255,12 @@ class ProfileView {
  public:
   using real_type = Real;
   template <RollerProfile P>
-    requires(std::same_as<typename P::real_type, Real> && !std::same_as<P, ProfileView>)
-  explicit ProfileView(const P& profile)
+  requires(std::same_as<typename P::real_type, Real> &&
+           !std::same_as<P, ProfileView>) explicit ProfileView(const P& profile)
       : profile_(&profile),
         drop_([](const void* p, Real y) -> Real { return static_cast<const P*>(p)->drop(y); }),
-        slope_([](const void* p, Real y) -> Real {
-          return static_cast<const P*>(p)->drop_slope(y);
-        }),
+        slope_(
+            [](const void* p, Real y) -> Real { return static_cast<const P*>(p)->drop_slope(y); }),
         c1_(profile.c1()),
         y_min_(profile.y_min()),
         y_max_(profile.y_max()),

@@ -133,8 +133,8 @@ Real quadrature_tolerance(Real tolerance) {
 /// singularity (at distance `strip` above the panel's centre): with half-width h,
 /// rho = d/h + sqrt(1 + (d/h)^2) = exp(asinh(d/h)), so 2 n asinh(strip/h) >= ln(4096/tol) (Davis &
 /// Rabinowitz, Methods of Numerical Integration, 4.6; the factor 4096 covers the constant of the
-/// bound for a pole on the ellipse, docs/theory.md section 7). tol = quadrature_tolerance(tolerance):
-/// the scalar's epsilon by default.
+/// bound for a pole on the ellipse, docs/theory.md section 7). tol =
+/// quadrature_tolerance(tolerance): the scalar's epsilon by default.
 template <class Quadrature, class Real>
 Real strip_panel_width(Real strip, Real tolerance = Real(0)) {
   using std::log;

@@ -29,13 +29,17 @@ struct LineUnits {
   }
 
   /// A shape's lengths (a_ref, l and the centre) from the caller's units into these.
-  LineShape<Real> shape_in_units(LineShape<Real> shape) const { return scaled(std::move(shape), -length); }
+  LineShape<Real> shape_in_units(LineShape<Real> shape) const {
+    return scaled(std::move(shape), -length);
+  }
   /// A shape's lengths from these units into the caller's (for the messages of the warnings).
   LineShape<Real> shape_in_caller_units(LineShape<Real> shape) const {
     return scaled(std::move(shape), length);
   }
   /// A penetration from the caller's units into these.
-  Real penetration_in_units(Real d) const { return times_power_of_two(d, -(curvature + 2 * length)); }
+  Real penetration_in_units(Real d) const {
+    return times_power_of_two(d, -(curvature + 2 * length));
+  }
 
  private:
   static LineShape<Real> scaled(LineShape<Real> shape, int exponent) {

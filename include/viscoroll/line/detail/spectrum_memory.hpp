@@ -18,8 +18,8 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <boost/math/constants/constants.hpp>
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
@@ -85,7 +85,9 @@ void exterior_right_terms(const LineNodes<Real>& nd, Real x0, const std::vector<
     for (std::size_t k = 0; k < m; ++k)
       omega(i, Eigen::Index(k)) = lmax * tw[std::size_t(i)] * exp(-dx / lambda[k]);
   }
-  const auto dq = [&](std::size_t j, std::size_t k) { return f0[j] * (1 - c[j] / lambda[k]) - q[k]; };
+  const auto dq = [&](std::size_t j, std::size_t k) {
+    return f0[j] * (1 - c[j] / lambda[k]) - q[k];
+  };
   Array sigma2(static_cast<Eigen::Index>(ns));
   for (std::size_t j = 0; j < ns; ++j) {
     const Real sigma = nd.dist[j] / x0;
