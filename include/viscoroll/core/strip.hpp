@@ -191,15 +191,7 @@ class StripPressure {
   /// The same strip with c1, a, b, g, vtau and compliance given in `units` (StripUnits).
   StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
                 Real compliance)
-      : units_(units),
-        c1_(c1),
-        a_(a),
-        b_(b),
-        g_(g),
-        vtau_(vtau),
-        f_(f),
-        c_(compliance),
-        odd_(vtau - b) {}
+      : StripPressure(units, c1, a, b, g, vtau, f, compliance, Real(1), vtau - b) {}
 
   /// A strip whose pseudo-pressure (32) has the coefficients `even`, `odd` and g:
   /// p* = C1/(2 pi) [even (a^2 - xi^2) + odd xi + g] / sqrt(a^2 - xi^2), all in `units`. One

@@ -129,6 +129,23 @@ class LineSolver {
   /// The solver's units (docs/theory.md, "Scaling"; line/detail/line_units.hpp).
   using Units = detail::LineUnits<Real>;
 
+  /// The paper's ellipsoid in the solver's units (docs/theory.md, "Scaling"): C1, C2 in the unit
+  /// of curvature of C1's power of two, lengths in a power of two near the long-term a0, and the
+  /// long-term static contact of compliance (1 + creep_ratio) c in them, Eq. (47) with (52); c2/c1
+  /// checked representable against `inputs`.
+  template <class Inputs>
+  static std::pair<Units, StaticLineContact<Real>> ellipse_units(const LineScene<Real>& scene,
+                                                                 Real c, Real creep_ratio,
+                                                                 const Inputs& inputs) {
+    const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
+    const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
+    detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
+    const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
+    const auto slow_units = static_line_contact_in_units<Real>(
+        k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
+    return {Units{k1.m, c2, k1.e, slow_units.length}, slow_units.contact};
+  }
+
   static LineProblem<Real> problem(const Units& u, const StaticLineContact<Real>& slow, Real f,
                                    Real vtau) {
     return {u.c1, u.c2, vtau, f, slow.a0, slow.l, u.c1 * slow.a0 * slow.a0 * slow.l / 3};
@@ -576,14 +593,7 @@ class LineSolver {
     bool asymmetric = false;
     if constexpr (!ellipsoid) asymmetric = !scene.roller.symmetric();
     if constexpr (ellipsoid) {
-      const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
-      const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
-      detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
-      const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
-      const auto slow_units = static_line_contact_in_units<Real>(
-          k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
-      u = Units{k1.m, c2, k1.e, slow_units.length};
-      slow = slow_units.contact;
+      std::tie(u, slow) = ellipse_units(scene, c, creep_ratio, inputs);
     } else {
       slow_profile = static_profile_contact(scene.roller, (1 + creep_ratio) * c * scene.load,
                                             profile_static_terms);
@@ -839,17 +849,11 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
              ", tau = " + detail::format_value(memory.tau);
     };
     detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-    // Scaling (docs/theory.md, "Scaling"): C1, C2 in the unit of curvature of C1's power of two,
-    // lengths in a power of two near a0; every product below rounds as in the caller's units.
-    const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
-    const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + f);
-    detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
-    const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
-    // Long-term static contact, compliance (1 + f) c, Eq. (47) with (52).
-    const auto slow_units = static_line_contact_in_units<Real>(
-        k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
-    const Units u{k1.m, c2, k1.e, slow_units.length};
-    const StaticLineContact<Real> slow = slow_units.contact;
+    // Scaling (docs/theory.md, "Scaling"): every product below rounds as in the caller's units.
+    // The long-term static contact has the compliance (1 + f) c.
+    const std::pair<Units, StaticLineContact<Real>> long_term = ellipse_units(scene, c, f, inputs);
+    const Units u = long_term.first;
+    const StaticLineContact<Real> slow = long_term.second;
     const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
     const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
     const Real eps = std::numeric_limits<Real>::epsilon();
@@ -858,12 +862,11 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
         if (f > 0 && vtau > 0) {
           if (strip_is_glassy(vtau, f, slow.a0)) {
             // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
-            const auto fast =
-                static_line_contact_in_units<Real>(k1.m, c2, {cc.m * load.m, cc.e + load.e}, k1.e);
-            const int shift = fast.length - u.length;  // to the units of the long-term contact
-            const StaticLineContact<Real> glassy{times_power_of_two(fast.contact.a0, shift),
-                                                 times_power_of_two(fast.contact.l, shift),
-                                                 times_power_of_two(fast.contact.d, 2 * shift)};
+            const auto [fast_units, fast] = ellipse_units(scene, c, Real(0), inputs);
+            const int shift = fast_units.length - u.length;  // to the units of the long-term one
+            const StaticLineContact<Real> glassy{times_power_of_two(fast.a0, shift),
+                                                 times_power_of_two(fast.l, shift),
+                                                 times_power_of_two(fast.d, 2 * shift)};
             // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
             return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
           }
