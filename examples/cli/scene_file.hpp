@@ -1,7 +1,7 @@
 // viscoroll-solve: the scene file (docs/cli.md), a JSON object in SI units. parse_scene is a pure
 // function from text to a Scene, so that tests and the fuzzer drive it without files;
-// read_scene_file does the file's part (missing, a directory, empty, over 1 MiB). Every error
-// throws std::invalid_argument whose message names the file, the key with its path
+// read_scene_file does the file's part (missing, not a regular file, empty, over 1 MiB). Every
+// error throws std::invalid_argument whose message names the file, the key with its path
 // ("material.f", "speeds[2]") and the valid range. Uses nlohmann-json, a dependency of the
 // command-line tool only (never of include/).
 //
@@ -26,6 +26,7 @@
 #include <utility>
 #include <variant>
 #include <vector>
+#include <viscoroll/input_limits.hpp>
 
 #include "solve_options.hpp"
 
@@ -124,12 +125,57 @@ struct Scene {
   std::vector<double> temperatures;
 };
 
-/// The largest scene file read, in bytes.
-inline constexpr std::size_t max_scene_bytes = std::size_t(1) << 20;
+/// The largest scene file read, in bytes (viscoroll::limits::scene_file_bytes).
+inline constexpr std::size_t max_scene_bytes = limits::scene_file_bytes;
 
 namespace scene_detail {
 
 using nlohmann::json;
+
+/// Why `text` is not UTF-8 text, or empty if it is: a UTF-16 or UTF-32 byte order mark, a NUL
+/// byte (UTF-16 text without a mark) or the first byte that is not part of a UTF-8 sequence.
+inline std::string not_utf8(std::string_view text) {
+  const auto starts = [&](std::string_view mark) { return text.substr(0, mark.size()) == mark; };
+  if (starts(std::string_view("\xFF\xFE\0\0", 4)) || starts(std::string_view("\0\0\xFE\xFF", 4)))
+    return "a UTF-32 byte order mark";
+  if (starts("\xFF\xFE") || starts("\xFE\xFF")) return "a UTF-16 byte order mark";
+  const auto bad = [](std::size_t at, unsigned char byte) -> std::string {
+    if (byte == 0) return "a NUL byte at offset " + std::to_string(at) + ", as in UTF-16 text";
+    char hex[2] = {"0123456789abcdef"[byte >> 4], "0123456789abcdef"[byte & 15]};
+    return "byte 0x" + std::string(hex, 2) + " at offset " + std::to_string(at);
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == 0) return bad(i, c);
+    // The length of the sequence a lead byte starts, and the range of its second byte
+    // (excluding overlong forms, surrogates and code points beyond U+10FFFF).
+    std::size_t length = 1;
+    unsigned char lo = 0x80, hi = 0xBF;
+    if (c < 0x80) {
+      ++i;
+      continue;
+    } else if (c >= 0xC2 && c <= 0xDF) {
+      length = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+      length = 3;
+      if (c == 0xE0) lo = 0xA0;
+      if (c == 0xED) hi = 0x9F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+      length = 4;
+      if (c == 0xF0) lo = 0x90;
+      if (c == 0xF4) hi = 0x8F;
+    } else {
+      return bad(i, c);
+    }
+    for (std::size_t k = 1; k < length; ++k) {
+      if (i + k >= text.size()) return bad(i, c);
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      if (next < (k == 1 ? lo : 0x80) || next > (k == 1 ? hi : 0xBF)) return bad(i + k, next);
+    }
+    i += length;
+  }
+  return {};
+}
 
 /// The shortest decimal that reads back as x ("0.7", "inf").
 inline std::string shortest(double x) {
@@ -566,8 +612,13 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   using scene_detail::json;
   using scene_detail::ObjectReader;
   if (text.size() > max_scene_bytes)
-    throw std::invalid_argument("viscoroll-solve: " + source + ": larger than 1 MiB (" +
-                                std::to_string(text.size()) + " bytes); not a scene file");
+    throw std::invalid_argument(
+        "viscoroll-solve: " + source + ": size = " + std::to_string(text.size()) +
+        " bytes is over the limit of " + viscoroll::detail::byte_size(max_scene_bytes) +
+        " for a scene file");
+  if (const std::string why = scene_detail::not_utf8(text); !why.empty())
+    throw std::invalid_argument("viscoroll-solve: " + source + ": scene file is not UTF-8 text (" +
+                                why + "); save it as UTF-8");
   json root;
   scene_detail::PathTracker tracker(source);
   const auto message = [](const json::exception& e) {
@@ -615,6 +666,10 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   if (!speeds.is_array())
     top.fail("speeds must be an array of numbers, got " + scene_detail::type_of(speeds));
   if (speeds.empty()) top.fail("speeds is empty; give at least one speed >= 0 (m/s)");
+  if (const std::string over =
+          viscoroll::detail::count_over_limit("speeds", speeds.size(), limits::speeds);
+      !over.empty())
+    top.fail(over);
   for (std::size_t k = 0; k < speeds.size(); ++k)
     scene.speeds.push_back(top.checked_number(speeds[k], "speeds[" + std::to_string(k) + "]",
                                               scene_detail::non_negative,
@@ -731,29 +786,15 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
   }
 }
 
-/// The text of the scene file `path`: an error if it is missing, a directory, empty or larger
-/// than max_scene_bytes.
+/// The text of the scene file `path`: an error if it is missing, a directory or another file
+/// that is not a regular one (a FIFO, /dev/zero), larger than max_scene_bytes, or empty
+/// (viscoroll::detail::read_bounded_file).
 inline std::string read_scene_file(const std::string& path) {
-  namespace fs = std::filesystem;
   const auto fail = [&](const std::string& message) {
     throw std::invalid_argument("viscoroll-solve: " + path + ": " + message);
   };
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) fail("no such file");
-  if (fs::is_directory(status)) fail("is a directory, not a scene file");
-  if (fs::is_regular_file(status)) {
-    const auto size = fs::file_size(path, ec);
-    if (!ec && size > max_scene_bytes)
-      fail("larger than 1 MiB (" + std::to_string(size) + " bytes); not a scene file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail("cannot be opened for reading");
-  std::string text(max_scene_bytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad()) fail("cannot be read");
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > max_scene_bytes) fail("larger than 1 MiB; not a scene file");
+  std::string text =
+      viscoroll::detail::read_bounded_file(path, max_scene_bytes, "scene file", fail);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     fail("is empty; a scene file is a JSON object (docs/cli.md)");
   return text;

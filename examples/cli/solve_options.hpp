@@ -2,8 +2,10 @@
 // drive it. Every error throws std::invalid_argument with a one-line message naming the option.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <set>
@@ -12,6 +14,7 @@
 #include <string_view>
 #include <system_error>
 #include <vector>
+#include <viscoroll/input_limits.hpp>
 
 namespace viscoroll::cli {
 
@@ -112,8 +115,14 @@ inline double parse_number(std::string_view option, std::string_view text) {
   return value;
 }
 
-/// A comma-separated list of finite numbers ("1,2,3").
-inline std::vector<double> parse_numbers(std::string_view option, std::string_view text) {
+/// A comma-separated list of finite numbers ("1,2,3"), of at most `max_count`, checked before
+/// any is parsed.
+inline std::vector<double> parse_numbers(std::string_view option, std::string_view text,
+                                         std::size_t max_count = std::size_t(-1)) {
+  const auto count = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
+  if (const std::string over = viscoroll::detail::count_over_limit(option, count, max_count);
+      !over.empty())
+    throw std::invalid_argument("viscoroll-solve: " + over);
   std::vector<double> values;
   while (true) {
     const auto comma = text.find(',');
@@ -208,9 +217,9 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     o.load = parse_number("--load", required("--load"));
     if (given.count("--c2")) o.c2 = parse_number("--c2", given["--c2"]);
     o.tau = parse_numbers("--tau", required("--tau"));
-    o.speeds = parse_numbers("--speed", required("--speed"));
+    o.speeds = parse_numbers("--speed", required("--speed"), viscoroll::limits::speeds);
   } else if (given.count("--speed")) {
-    o.speeds = parse_numbers("--speed", given["--speed"]);
+    o.speeds = parse_numbers("--speed", given["--speed"], viscoroll::limits::speeds);
   }
   if (given.count("--temperature")) {
     if (o.scene.empty())

@@ -9,6 +9,11 @@
 // chunks share nothing, so they run on any number of threads, and the results, returned in the
 // order of the speeds, are the same bit for bit whatever the thread count: the thread count
 // decides only who solves a chunk, never how.
+//
+// A sweep can be stopped from another thread (SweepOptions::stop): each thread checks the flag
+// before each solve, and the sweep throws SweepStopped once they have all stopped. A solve under
+// way is finished first, so a sweep stops within one solve's time. The flag is only read, so a
+// sweep that is not stopped gives the same results bit for bit.
 #pragma once
 
 #include <algorithm>
@@ -20,6 +25,7 @@
 #include <mutex>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -39,6 +45,11 @@ struct SweepOptions {
   /// Called after each solve with (solves completed, total), from the worker threads, one call at
   /// a time (under a lock). May be empty.
   std::function<void(std::size_t, std::size_t)> progress;
+  /// A stop flag, or null. Once it reads true, every thread stops before its next solve and the
+  /// sweep throws SweepStopped after they have all stopped (an exception of a solve already made
+  /// is thrown instead, as without the flag). Set it from any thread (Python's Ctrl-C watcher,
+  /// a user interface); the sweep never writes it.
+  const std::atomic<bool>* stop = nullptr;
 
   /// Throws std::invalid_argument naming the setting unless 1 <= chunk <= 2^20 and
   /// threads <= 4096.
@@ -53,6 +64,12 @@ struct SweepOptions {
     unsigned n = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
     return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(chunks, 1)));
   }
+};
+
+/// Thrown by a sweep stopped by SweepOptions::stop before it solved every item.
+class SweepStopped : public std::runtime_error {
+ public:
+  SweepStopped() : std::runtime_error("viscoroll: the sweep was stopped (SweepOptions::stop)") {}
 };
 
 namespace detail {
@@ -85,7 +102,8 @@ namespace detail {
 /// never continues into the next), each row cut into chunks of options.chunk, the chunks spread
 /// over threads. solve(i, seed) solves item i from `seed` (nullptr: cold) and returns its
 /// solution; a usable solution seeds the next item of its chunk. Returns the solutions in item
-/// order; rethrows the first exception in item order after every thread has stopped.
+/// order; rethrows the first exception in item order after every thread has stopped, else throws
+/// SweepStopped if options.stop stopped it short.
 template <class Solution, class Solve>
 std::vector<Solution> run_chunks(std::size_t n, std::size_t row_length, const SweepOptions& options,
                                  const Solve& solve) {
@@ -97,6 +115,7 @@ std::vector<Solution> run_chunks(std::size_t n, std::size_t row_length, const Sw
   std::vector<std::optional<Solution>> results(n);
   std::vector<std::exception_ptr> errors(chunks);
   std::atomic<std::size_t> next_chunk{0};
+  std::atomic<bool> stopped{false};
   std::mutex progress_lock;
   std::size_t completed = 0;
 
@@ -105,6 +124,10 @@ std::vector<Solution> run_chunks(std::size_t n, std::size_t row_length, const Sw
     const std::size_t last = std::min({n, (row + 1) * row_length, first + options.chunk});
     const Solution* seed = nullptr;
     for (std::size_t i = first; i < last; ++i) {
+      if (options.stop && options.stop->load(std::memory_order_relaxed)) {
+        stopped = true;
+        return;
+      }
       results[i].emplace(solve(i, seed));
       seed = usable_as_seed(*results[i]) ? &*results[i] : nullptr;
       if (options.progress) {
@@ -133,6 +156,7 @@ std::vector<Solution> run_chunks(std::size_t n, std::size_t row_length, const Sw
   }  // the jthreads join here
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
+  if (stopped) throw SweepStopped();
 
   std::vector<Solution> out;
   out.reserve(n);
@@ -155,8 +179,9 @@ typename Solver::Solution solve_seeded(const Solver& solver, const Scene& scene,
 /// Solves `scene` at each of `speeds` (scene.speed is replaced), in chunks of continuation spread
 /// over threads (see the file comment). Returns the solutions in the order of `speeds`. An
 /// exception thrown by a solve (invalid input) is rethrown here, the first in speed order, after
-/// every thread has stopped. `solver.solve` must be safe to call concurrently (every viscoroll
-/// solver is: solve() is const and keeps its work space local).
+/// every thread has stopped; SweepStopped if options.stop stopped it. `solver.solve` must be safe
+/// to call concurrently (every viscoroll solver is: solve() is const and keeps its work space
+/// local).
 template <class Solver, class Scene>
 std::vector<typename Solver::Solution> sweep(
     const Solver& solver, Scene scene,

@@ -7,18 +7,26 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
+#include <functional>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/input_limits.hpp>
 #include <viscoroll/line/line_options.hpp>
 #include <viscoroll/material/dma_fit.hpp>
 #include <viscoroll/material/elastic.hpp>
@@ -196,7 +204,11 @@ std::optional<Method> parse_method(const std::optional<std::string>& name) {
                               "\" is not one of \"plane\", \"line\", \"bem\"");
 }
 
+/// Each speed >= 0 and finite, and at most limits::speeds of them (as the command line).
 void check_speeds(const std::vector<double>& speeds) {
+  if (const std::string over = detail::count_over_limit("speeds", speeds.size(), limits::speeds);
+      !over.empty())
+    throw std::invalid_argument("viscoroll: " + over);
   for (const double v : speeds) detail::require_non_negative("speed", v);
 }
 
@@ -374,6 +386,11 @@ py::object to_python(const Value& value) {
 
 /// A 1-D float64 array as a vector (any sequence of numbers converts).
 std::vector<double> as_vector(const py::object& values, const char* name) {
+  // NumPy would read a string of digits as a number.
+  if (py::isinstance<py::str>(values) || py::isinstance<py::bytes>(values))
+    throw std::invalid_argument(std::string("viscoroll: ") + name + " = " +
+                                py::repr(values).cast<std::string>() +
+                                " is a string, not a number or a 1-D sequence of numbers");
   const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
   if (!array || array.ndim() > 1)
     throw std::invalid_argument(std::string("viscoroll: ") + name +
@@ -403,6 +420,62 @@ bool fast_setting(const SceneSpec& scene, const std::optional<std::string>& sett
                                             "line method, got method '") +
                                 method_name(method) + "'");
   return true;
+}
+
+/// How often a waiting solve() or sweep() runs Python's signal handlers: Ctrl-C is answered within
+/// this time plus what the work takes to stop.
+constexpr std::chrono::milliseconds signal_poll{50};
+
+/// work(stop) on a thread of its own, while the calling thread (holding the GIL) waits for it in
+/// steps of signal_poll with the GIL released and runs Python's signal handlers between them
+/// (PyErr_CheckSignals). When a handler raises (Ctrl-C: KeyboardInterrupt), `stop` is set and the
+/// exception is raised: after the work has ended if `join_on_stop` (a sweep, which stops before
+/// its next solve), at once otherwise (a solve that cannot be stopped finishes in the background
+/// and its result is dropped; `work` must then own everything it uses). The work's own exception
+/// is rethrown.
+template <class T>
+T interruptible(std::function<T(const std::atomic<bool>&)> work, bool join_on_stop) {
+  struct State {
+    std::atomic<bool> stop{false};
+    std::mutex lock;
+    std::condition_variable ended;
+    bool done = false;
+    std::optional<T> result;
+    std::exception_ptr error;
+  };
+  auto state = std::make_shared<State>();
+  std::thread thread([state, work = std::move(work)] {
+    try {
+      state->result.emplace(work(state->stop));
+    } catch (...) {
+      state->error = std::current_exception();
+    }
+    {
+      const std::lock_guard<std::mutex> guard(state->lock);
+      state->done = true;
+    }
+    state->ended.notify_all();
+  });
+  const auto finished = [&](std::chrono::milliseconds step) {
+    const py::gil_scoped_release release;
+    std::unique_lock<std::mutex> guard(state->lock);
+    return state->ended.wait_for(guard, step, [&] { return state->done; });
+  };
+  while (!finished(signal_poll)) {
+    if (PyErr_CheckSignals() != 0) {
+      state->stop = true;
+      if (join_on_stop) {
+        const py::gil_scoped_release release;
+        thread.join();
+      } else {
+        thread.detach();
+      }
+      throw py::error_already_set();
+    }
+  }
+  thread.join();
+  if (state->error) std::rethrow_exception(state->error);
+  return std::move(*state->result);
 }
 
 SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid, double speed,
@@ -686,6 +759,19 @@ ValueError
 }  // namespace viscoroll::python
 
 PYBIND11_MODULE(_viscoroll, m) {
+  // std::invalid_argument becomes ValueError with its message read as UTF-8, any byte that is not
+  // shown as an escape (pybind11's own translation would lose such a message), never empty.
+  py::register_local_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const std::invalid_argument& e) {
+      std::string what = e.what();
+      if (what.empty()) what = "viscoroll: invalid input (std::invalid_argument without a message)";
+      const py::object text = py::reinterpret_steal<py::object>(PyUnicode_DecodeUTF8(
+          what.data(), static_cast<py::ssize_t>(what.size()), "backslashreplace"));
+      PyErr_SetObject(PyExc_ValueError, text.ptr());
+    }
+  });
   using namespace viscoroll::python;
   namespace vp = viscoroll::python;
   m.doc() =
@@ -784,6 +870,9 @@ PYBIND11_MODULE(_viscoroll, m) {
       "naming a parameter out of range.")
       .def(py::init([](double g_inf, double nu, const std::vector<std::pair<double, double>>& terms,
                        const std::optional<vp::Shift>& shift) {
+             // As a scene file's material.terms: a spectrum has at least one term.
+             viscoroll::detail::require(!terms.empty(), "len(terms)", terms.size(),
+                                        "len(terms) >= 1 (at least one (g, tau) pair)");
              std::vector<viscoroll::RelaxationTerm<double>> t;
              for (const auto& [g, tau] : terms) t.push_back({g, tau});
              return PronyMaterial{{prony_spec(viscoroll::PronyRelaxation<double>(g_inf, nu, t),
@@ -872,7 +961,10 @@ PYBIND11_MODULE(_viscoroll, m) {
       .def_static(
           "from_json",
           [](const py::object& path, std::optional<double> temperature) {
-            const std::string file = py::str(path);
+            // The name's bytes, as the command line gets them (os.fsencode: a str, bytes or
+            // path; a name that is not UTF-8 included).
+            const std::string file =
+                py::module_::import("os").attr("fsencode")(path).cast<std::string>();
             try {
               const auto scene =
                   viscoroll::cli::parse_scene(viscoroll::cli::read_scene_file(file), file);
@@ -1056,7 +1148,18 @@ PYBIND11_MODULE(_viscoroll, m) {
         }
         viscoroll::detail::require_non_negative("speed", v);
         SolvedPtr solved;
-        {
+        if (which == Method::bem) {
+          // A bem solve can take minutes and cannot be stopped: Ctrl-C is answered at once and
+          // the solve ends in the background, on copies of its inputs.
+          solved = interruptible<SolvedPtr>(
+              [scene, which, grid, v, fast,
+               seed = start ? std::optional(*start) : std::nullopt](const std::atomic<bool>&) {
+                return solve_scene(scene, which, grid, v, fast, seed ? &*seed : nullptr);
+              },
+              false);
+        } else {
+          // The plane and line methods take milliseconds (a line spectrum on a roller profile up
+          // to half a second): Python's handlers run when they return.
           py::gil_scoped_release release;
           solved = solve_scene(scene, which, grid, v, fast, start);
         }
@@ -1089,21 +1192,22 @@ PYBIND11_MODULE(_viscoroll, m) {
                                    "1 <= chunk <= 1048576");
         options.threads = static_cast<unsigned>(t);
         options.chunk = static_cast<std::size_t>(chunk);
-        std::vector<SolvedPtr> solved;
-        {
-          py::gil_scoped_release release;
-          switch (which) {
-            case Method::plane:
-              solved = sweep_plane(scene, v, options);
-              break;
-            case Method::line:
-              solved = sweep_line(scene, v, n, fast, options);
-              break;
-            case Method::bem:
-              solved = sweep_bem(scene, v, n, options);
-              break;
-          }
-        }
+        // Ctrl-C stops every thread before its next solve (SweepOptions::stop).
+        std::vector<SolvedPtr> solved = interruptible<std::vector<SolvedPtr>>(
+            [&](const std::atomic<bool>& stop) {
+              viscoroll::SweepOptions stoppable = options;
+              stoppable.stop = &stop;
+              switch (which) {
+                case Method::plane:
+                  return sweep_plane(scene, v, stoppable);
+                case Method::line:
+                  return sweep_line(scene, v, n, fast, stoppable);
+                case Method::bem:
+                  return sweep_bem(scene, v, n, stoppable);
+              }
+              throw std::logic_error("viscoroll: unknown method");
+            },
+            true);
         py::dict out = to_columns(solved);
         if (with_results) {
           py::list results;

@@ -137,7 +137,7 @@ TEST_CASE("cli: malformed scene files exit 2 naming the key, nothing on stdout",
   // A 10 MB file (a valid scene padded with spaces), a directory, a missing file, a conflict.
   const fs::path big = dir.path() / "big.json";
   std::ofstream(big) << text_with({}) << std::string(10 << 20, ' ');
-  files.push_back({big.string(), {"big", {}, "", "larger than 1 MiB"}});
+  files.push_back({big.string(), {"big", {}, "", "over the limit of 1 MiB"}});
   files.push_back({dir.path().string(), {"directory", {}, "", "is a directory"}});
   files.push_back({(dir.path() / "missing.json").string(), {"missing", {}, "", "no such file"}});
   files.push_back({(scenes_dir() / "paper.json").string(),

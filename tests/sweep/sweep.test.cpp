@@ -2,7 +2,9 @@
 // continuation it describes returns (each chunk from a cold start, each later speed seeded with
 // the previous converged, iterated solution of its chunk), bit for bit and whatever the thread
 // count; a solver without seeds (plane) is solved speed by speed; an invalid speed is rethrown
-// with the library's message; the options validate themselves.
+// with the library's message; the options validate themselves; a stop flag stops the threads
+// before their next solve, and a flag never set changes nothing.
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -107,6 +109,41 @@ TEST_CASE("sweep: options name the setting and its range", "[sweep]") {
   const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, 1));
   REQUIRE(viscoroll::sweep(solver, viscoroll::PlaneScene<double>{1, 1, 0}, std::vector<double>{})
               .empty());
+}
+
+TEST_CASE("sweep: a stop flag stops every thread before its next solve", "[sweep]") {
+  const viscoroll::PlaneSolverD solver(viscoroll::StandardLinearSolid<double>(1, 0.5, 9, 1));
+  const viscoroll::PlaneScene<double> scene{1, 1, 0};
+  const std::vector<double> speeds = log_speeds(0.01, 100, 200);
+  for (unsigned threads : {1u, 2u, 3u}) {
+    INFO("threads " << threads);
+    std::atomic<bool> stop{false};
+    SweepOptions options;
+    options.chunk = 4;
+    options.threads = threads;
+    options.stop = &stop;
+    // Never set: the results of a sweep without the flag, bit for bit.
+    SweepOptions plain;
+    plain.chunk = 4;
+    plain.threads = threads;
+    const auto free = viscoroll::sweep(solver, scene, speeds, plain);
+    const auto flagged = viscoroll::sweep(solver, scene, speeds, options);
+    REQUIRE(flagged.size() == speeds.size());
+    for (std::size_t i = 0; i < speeds.size(); ++i) {
+      REQUIRE(same_bits(flagged[i].a, free[i].a));
+      REQUIRE(same_bits(flagged[i].chi, free[i].chi));
+    }
+    // Set after the 10th solve (from the progress callback, under the sweep's lock): each other
+    // thread finishes at most the solve it is in.
+    std::size_t solved = 0;
+    options.progress = [&](std::size_t done, std::size_t) {
+      solved = done;
+      if (done == 10) stop = true;
+    };
+    REQUIRE_THROWS_AS(viscoroll::sweep(solver, scene, speeds, options), viscoroll::SweepStopped);
+    REQUIRE(solved >= 10);
+    REQUIRE(solved <= 10 + (threads - 1));
+  }
 }
 
 }  // namespace test_sweep

@@ -16,6 +16,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +31,7 @@
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/input_limits.hpp>
 #include <viscoroll/material/detail/nnls.hpp>
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/material/temperature_shift.hpp>
@@ -171,12 +173,18 @@ DmaData<Real> read_dma_csv(std::istream& in, const DmaCsvOptions<Real>& options 
   return data;
 }
 
-/// read_dma_csv of a file; throws std::invalid_argument if it cannot be opened.
+/// read_dma_csv of a file of at most `max_bytes` (limits::dma_file_bytes, 1 MiB); throws
+/// std::invalid_argument naming the file if it is missing, not a regular file (a directory, a
+/// FIFO, /dev/zero), larger, or cannot be read. The type and size are checked before the file is
+/// opened, and at most max_bytes + 1 bytes are read.
 template <RealScalar Real>
 DmaData<Real> read_dma_csv_file(const std::filesystem::path& path,
-                                const DmaCsvOptions<Real>& options = {}) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("viscoroll: cannot open DMA CSV " + path.string());
+                                const DmaCsvOptions<Real>& options = {},
+                                std::size_t max_bytes = limits::dma_file_bytes) {
+  std::istringstream in(
+      detail::read_bounded_file(path, max_bytes, "DMA CSV file", [&](const std::string& message) {
+        throw std::invalid_argument("viscoroll: DMA CSV " + path.string() + ": " + message);
+      }));
   return read_dma_csv<Real>(in, options, path.string());
 }
 
