@@ -745,6 +745,7 @@ int run_plane(const Problem& p, Output& out) {
                    {"pmax", peak.pressure},
                    {"pmax_x", peak.x},
                    {"active_terms", static_cast<long long>(s.active_terms)},
+                   {"spectrum_error", s.spectrum_error},
                    {"seconds", seconds},
                    {"converged", s.converged},
                    {"iterations", static_cast<long long>(s.iterations)},
@@ -843,7 +844,8 @@ int run_line(const Problem& p, Output& out) {
                       {"temperature", temperature},
                       {"a_T", a_t},
                       {"speed", scene.speed}};
-          const Record middle = {{"active_terms", static_cast<long long>(s.active_terms)}};
+          const Record middle = {{"active_terms", static_cast<long long>(s.active_terms)},
+                                 {"spectrum_error", s.spectrum_error}};
           const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
           r.insert(r.end(), fields.begin(), fields.end());
           out.add(std::move(r));

@@ -88,8 +88,10 @@ class PlaneSolved final : public Solved {
                      {"chi", s_.chi},
                      {"pmax", peak.pressure},
                      {"pmax_x", peak.x}};
-    if constexpr (requires { s_.active_terms; })
+    if constexpr (requires { s_.active_terms; }) {
       fields.emplace_back("active_terms", static_cast<long long>(s_.active_terms));
+      fields.emplace_back("spectrum_error", s_.spectrum_error);
+    }
     record_ = joined(joined(keys.head("plane", speed), fields),
                      {{"seconds", seconds},
                       {"converged", s_.converged},
@@ -539,7 +541,12 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"temperature", "Prony material: the temperature (degrees Celsius; nan without a shift)."},
       {"a_T", "Prony material: the shift factor a_T at that temperature (1 at t_ref)."},
       {"active_terms",
-       "Prony material, plane and line: retardation terms neither relaxed nor glassy at V."},
+       "Prony material, plane and line: retardation terms neither relaxed nor glassy at V "
+       "(after merging near-equal times)."},
+      {"spectrum_error",
+       "Prony material, plane and line: bound on the relative change of the complex compliance "
+       "made by merging near-equal times, plus (line) the estimated share of the terms folded "
+       "as relaxed or glassy; 0 if none (docs/materials.md)."},
       {"speed", "Rolling speed V."},
       {"vtau", "V tau, the memory length; not with a Prony material."},
       {"a0", "Half width of the contact at y = 0."},

@@ -48,10 +48,12 @@ class LineSpectrumSolved final : public Solved {
   using Solution = SpectrumSolver::Solution;
   LineSpectrumSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
-    record_ = joined(
-        keys.head("line", speed),
-        cli::line_fields<Record>(s_, {{"active_terms", static_cast<long long>(s_.active_terms)}},
-                                 terms, seconds));
+    record_ =
+        joined(keys.head("line", speed),
+               cli::line_fields<Record>(s_,
+                                        {{"active_terms", static_cast<long long>(s_.active_terms)},
+                                         {"spectrum_error", s_.spectrum_error}},
+                                        terms, seconds));
   }
 
   const Solution& solution() const { return s_; }

@@ -282,7 +282,7 @@ TEST_CASE(
   for (std::size_t k = 0; k < x.size(); ++k) {
     check_same(x[k], y[k], 1e-13,
                {"seconds", "temperature", "a_T", "tau", "vtau", "residual", "iterations",
-                "active_terms", "pmax_x"});
+                "active_terms", "spectrum_error", "pmax_x"});
     // The peak's location is the root of the slope (7), whose two terms cancel as V tau/a falls:
     // it moves by about eps a/(V tau) of a (theory.md, "The plane problem"; here a/V tau <= 1e3).
     CHECK(std::abs(x[k]["pmax_x"].get<double>() - y[k]["pmax_x"].get<double>()) <=
@@ -331,8 +331,10 @@ TEST_CASE("cli prony: the line method solves a spectrum; one term equals the sta
   const auto [x, y] = one_term_and_its_solid(dir.path(), scene, 2);
   for (std::size_t k = 0; k < x.size(); ++k) {
     CHECK(x[k]["active_terms"] == 1);
+    CHECK(x[k]["spectrum_error"] == 0.0);
     check_same(x[k], y[k], 1e-13,
-               {"seconds", "temperature", "a_T", "tau", "vtau", "active_terms", "pmax", "pmax_x"});
+               {"seconds", "temperature", "a_T", "tau", "vtau", "active_terms", "spectrum_error",
+                "pmax", "pmax_x"});
   }
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 #include <viscoroll/core/along_roller.hpp>
@@ -151,6 +152,21 @@ std::vector<std::string> line_bound_warnings(const LineSolution<Real, Quadrature
     warnings.push_back("b(0)/a0 = " + text(b0 / s.a_long_term) + " < 0 breaks the bound b(0) >= 0" +
                        advice);
   return warnings;
+}
+
+/// A converged chi below zero (docs/errors.md, "chi below zero"): rolling dissipates, so chi >= 0;
+/// a negative chi is the method's discretisation error on a nearly elastic material, and the
+/// rolling resistance is zero to the method's accuracy. Empty otherwise.
+template <class Real>
+std::vector<std::string> line_chi_sign_warnings(bool converged, Real chi) {
+  if (!converged || !(chi < 0)) return {};
+  std::ostringstream text;
+  text.precision(3);
+  text << "chi = " << double(chi)
+       << " < 0: rolling dissipates energy, so chi >= 0; a negative chi is the line method's "
+          "discretisation error on a nearly elastic material: the rolling resistance is zero to "
+          "the method's accuracy (the bem method resolves it)";
+  return {text.str()};
 }
 
 }  // namespace viscoroll

@@ -536,6 +536,8 @@ class LineSolver {
   static void add_warnings(Solution& sol, const Units& u, bool bounds = true) {
     for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
       sol.warnings.push_back(std::move(w));
+    for (auto& w : line_chi_sign_warnings(sol.converged, sol.chi))
+      sol.warnings.push_back(std::move(w));
     if (!bounds) return;
     const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
     for (auto& w : line_bound_warnings(sol, tolerance)) sol.warnings.push_back(std::move(w));
@@ -563,6 +565,7 @@ class LineSolver {
     const Real sqrt_eps = std::sqrt(std::numeric_limits<Real>::epsilon());
     const Real c = material_.instantaneous_compliance();
     const auto& terms = material_.memory_terms();
+    detail::require_spectrum_terms(terms.size(), "line");
     Real creep_ratio = 0;
     for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
     const Real c1 = [&] {
@@ -607,15 +610,21 @@ class LineSolver {
     // chi/C1 by O(V tau_k) <= sqrt(eps) a0 (P6), below the line theory's own error, and keeps the
     // strips out of the slow regime of the line equations (docs/line-solver.md), where they have
     // no root. Relaxed terms: c -> c (1 + relaxed), the active f -> f / (1 + relaxed) (R6b).
-    auto classes = detail::classify_spectrum(terms, scene.speed, u.length, sqrt_eps * slow.a0,
-                                             slow.a0, creep_ratio);
+    // Terms whose memory acts as relaxed or as glassy to within the line method's spectrum
+    // budget are folded or dropped as well (S21).
+    auto classes =
+        detail::classify_spectrum(terms, scene.speed, u.length, sqrt_eps * slow.a0, slow.a0,
+                                  creep_ratio, line_spectrum_budget<Real>(), slow.l);
     const Real relaxed = classes.relaxed;
-    auto& active = classes.active;
-    const auto merged = detail::merge_spectrum(std::move(active));
+    // Near-equal times merged where the closed-form strip would lose digits ((S19), (S20)).
+    const auto conditioned = detail::condition_spectrum(
+        std::move(classes.active), times_power_of_two(Real(1), u.length) / scene.speed);
+    const auto& merged = conditioned.terms;
     const Real c_eff = c * (1 + relaxed);
     Solution sol{};
     sol.c1 = c1;
     sol.active_terms = static_cast<int>(merged.size());
+    sol.spectrum_error = conditioned.spectrum_error + classes.error;
     if (merged.size() <= 1) {
       // The standard linear solid (or the elastic solid) of the remaining compliance: its own
       // solver, in the caller's units.
@@ -661,14 +670,7 @@ class LineSolver {
       return sol;
     }
     const Solution base = sol;
-    SpectrumLengths<Real> lengths;
-    for (const auto& t : merged) {
-      lengths.retardation.push_back(t.q);
-      lengths.creep_ratio += t.w;
-    }
-    for (const auto& t : detail::convert_spectrum(
-             merged, detail::SpectrumDirection::creep_to_relaxation, Real(1), Real(1)))
-      lengths.relaxation.push_back(t.q);
+    const SpectrumLengths<Real>& lengths = conditioned.lengths;
     // The static contact of the terms solved for, c_eff (1 + F'), in the same units: lengths
     // scale as the cube root of the compliance (Eq. 47 with (48)), d as its square; a profile's
     // is solved for (static_profile_contact, its a(0) in the caller's units eff_a0).
@@ -797,6 +799,8 @@ class LineSolver {
       if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
       if (sol.converged && !sol.root) sol.warnings.push_back(detail::minimum_warning(rmax));
       for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
+        sol.warnings.push_back(std::move(w));
+      for (auto& w : line_chi_sign_warnings(sol.converged, sol.chi))
         sol.warnings.push_back(std::move(w));
       return sol;
     };

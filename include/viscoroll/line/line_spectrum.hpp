@@ -35,6 +35,15 @@
 
 namespace viscoroll {
 
+/// The budget of docs/theory.md (S21): a spectrum's fastest and slowest terms whose share of the
+/// dissipation (and of the penetration) is within 1e-3 in all are folded into the compliance or
+/// dropped by the line method, a tenth of its stated error against the exact solution (1% in d
+/// and chi).
+template <class Real>
+Real line_spectrum_budget() {
+  return Real(1e-3);
+}
+
 /// The scene's constants seen by LineSpectrumResidual, lengths in one unit: the spectrum at the
 /// scene's speed (its lengths lambda_k = V tau_k, mu_i = V rho_i and creep ratio F), the scales of
 /// a and l (the long-term static contact of compliance c (1 + F)) and the load target

@@ -58,7 +58,11 @@ struct LineSpectrumSolution {
   int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
   Real residual;                      ///< max |r| of the scaled equations
   std::vector<std::string> warnings;
-  int active_terms;  ///< memory terms solved for at this speed
+  int active_terms;  ///< memory terms solved for at this speed (after merging near-equal times)
+  /// Bound on the relative change of the complex compliance made by merging near-equal times
+  /// (docs/theory.md (S19), (S20)) plus the share of the terms folded into the compliance or
+  /// dropped as acting relaxed or glassy (S21), at most line_spectrum_budget(); 0 if neither.
+  Real spectrum_error{};
   Real c1;
   /// The long-term compliance of the terms solved for, c (1 + relaxed)(1 + F') (Eq. 47 with
   /// (52): F0 integrates to it times the load); f0_per_load() reads it.

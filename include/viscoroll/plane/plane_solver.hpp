@@ -103,7 +103,16 @@ struct PlaneSpectrumSolution {
   Real residual;     ///< |A^2 (1 + 2 G0/a^2) - 1| at the returned a, A = a / a0 of the terms solved
   int active_terms;  ///< retardation terms solved for; the others are relaxed or glassy at V
   Real linear_residual;  ///< relative residual of the linear system (S5) at the returned a
-  Real amplification;    ///< rounding amplification of the closed form (S11); 1 for Hertz
+  /// Rounding amplification of the closed form (theory.md (S20): the larger of sum |A_i| and
+  /// the crowding of the retardation lengths); 1 for Hertz.
+  Real amplification;
+  /// Bound on chi's rounding error, 64 eps amplification^(3/2) C1 a (theory.md (S20)): a chi
+  /// within it of zero (of either sign) is zero to rounding; no converged chi is below
+  /// -chi_rounding.
+  Real chi_rounding;
+  /// Bound on the relative change of the complex compliance made by merging near-equal times
+  /// (docs/theory.md (S19), (S20)); 0 where no term was merged.
+  Real spectrum_error;
   std::vector<StripPressure<Real, Quadrature>> hertz;  ///< the Hertz strip, if no term is active
   std::vector<SpectrumStripPressure<Real, Quadrature>> spectrum;  ///< the strip (S9) otherwise
 
@@ -242,6 +251,7 @@ class PlaneSolver {
     const Real eps = std::numeric_limits<Real>::epsilon();
     const Real c = material_.instantaneous_compliance();
     const auto& terms = material_.memory_terms();
+    detail::require_spectrum_terms(terms.size(), "plane");
     Real creep_ratio = 0;
     for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
     const auto inputs = [&] {
@@ -271,22 +281,19 @@ class PlaneSolver {
     Solution s{};
     s.a_long_term = a0.m;
     s.converged = true;
+    s.amplification = 1;
     if (active.empty()) {
       s.a = a0_eff;
       s.f0 = c1.m * a0_eff * a0_eff / 4;
       s.hertz.emplace_back(units, c1.m, a0_eff, Real(0), Real(0), Real(0), creep_ratio - glassy_f,
                            cc.m);
     } else {
-      const auto merged = detail::merge_spectrum(std::move(active));
-      SpectrumLengths<Real> lengths;
-      lengths.creep_ratio = 0;
-      for (const auto& t : merged) {
-        lengths.retardation.push_back(t.q);
-        lengths.creep_ratio += t.w;
-      }
-      for (const auto& t : detail::convert_spectrum(
-               merged, detail::SpectrumDirection::creep_to_relaxation, Real(1), Real(1)))
-        lengths.relaxation.push_back(t.q);
+      // Near-equal times merged where the closed form would lose digits ((S19), (S20)).
+      const auto conditioned = detail::condition_spectrum(
+          std::move(active), times_power_of_two(Real(1), units.length) / scene.speed);
+      const auto& merged = conditioned.terms;
+      const SpectrumLengths<Real>& lengths = conditioned.lengths;
+      s.spectrum_error = conditioned.spectrum_error;
       const Real creep_active = lengths.creep_ratio;
       // (S8) load: a^2 + 2 G0 = a0^2, i.e. h(A) = A^2 + 2 G0(A a0) / a0^2 - 1, A = a / a0.
       auto h = [&](Real A) {
@@ -323,11 +330,20 @@ class PlaneSolver {
       // (S10): the centroid of p from the axis, xbar = b + centroid.
       const Real xbar = st.b + st.centroid;
       s.chi = c1.m * xbar;
-      s.converged = converged && st.residual <= 64 * eps * Real(2 * merged.size() + 1);
+      // The closed form's rounding, measured to grow as eps amplification^(3/2) (S20): the
+      // load's residual may not exceed 64 times it, and chi carries it on its scale C1 a.
+      using std::pow;
+      const Real rounding = 64 * eps * pow(conditioned.amplification, Real(3) / 2);
+      s.chi_rounding = rounding * c1.m * a;
+      // Converged: the root met its tolerance, the linear solve (S5) its residual, the
+      // amplification is within the limit of (S20) and the load's residual within the rounding.
+      s.converged = converged && st.residual <= 64 * eps * Real(2 * merged.size() + 1) &&
+                    conditioned.amplification <= detail::spectrum_amplification_limit<Real>() &&
+                    abs(A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1) <= rounding;
       s.iterations = iterations;
       s.residual = abs(A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1);
       s.linear_residual = st.residual;
-      s.amplification = st.amplification;
+      s.amplification = conditioned.amplification;
       s.active_terms = static_cast<int>(merged.size());
       s.spectrum.emplace_back(units, c1.m, a, st, lengths, c_eff);
     }
@@ -343,6 +359,7 @@ class PlaneSolver {
     s.g = in(s.g, area, "G0 of (S8)");
     s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
     s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
+    s.chi_rounding = times_power_of_two(s.chi_rounding, curvature + length);
     in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
     return s;
   }
