@@ -37,6 +37,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -159,14 +161,32 @@ std::string csv_header(const Record& r) {
   return out;
 }
 
-/// The numbers and booleans of `r`; a non-finite number is an empty cell.
+/// The fields that are the solution (not the inputs, the long-term static contact or the
+/// iteration's diagnostics): a result that did not converge shows none of them in the table and
+/// the CSV (docs/cli.md, "Output").
+bool solution_field(std::string_view key) {
+  static constexpr std::string_view keys[] = {
+      "a0", "b0", "l", "y_minus", "y_plus", "f0_max", "f0_max_y", "d", "chi", "pmax", "pmax_x"};
+  return std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
+}
+
+/// Whether `r` converged (its field `converged`).
+bool converged_record(const Record& r) {
+  const Value* c = find(r, "converged");
+  return c != nullptr && std::get<bool>(*c);
+}
+
+/// The numbers and booleans of `r`; a non-finite number, and a solution field of a result that
+/// did not converge, is an empty cell.
 std::string csv_row(const Record& r) {
   std::string out;
   bool first = true;
+  const bool converged = converged_record(r);
   for (const auto& field : r) {
     if (!in_csv(field.value)) continue;
     if (!first) out += ',';
     first = false;
+    if (!converged && solution_field(field.key)) continue;
     if (const auto* x = std::get_if<double>(&field.value))
       out += std::isfinite(*x) ? number(*x) : "";
     else if (const auto* n = std::get_if<long long>(&field.value))
@@ -340,20 +360,22 @@ class Output {
   }
 
   void table_row(const Record& r) {
-    const Value* converged = find(r, "converged");
     const bool prony = prony_table(r);
+    const bool ok = converged_record(r);
+    // A result that did not converge shows "-" for the solution, as for a non-finite number.
+    const auto solved = [&](std::string_view key) {
+      return cell(ok ? real(r, key) : std::numeric_limits<double>::quiet_NaN(), 7);
+    };
     std::printf("%-12s %-12s %-12s %-13s %-13s",
                 cell(real(r, prony ? "temperature" : "tau"), 6).c_str(),
                 cell(real(r, "speed"), 6).c_str(),
                 cell(prony ? real(r, "a_T") : real(r, "vtau") / real(r, "a_long_term"), 6).c_str(),
-                cell(real(r, "a0"), 7).c_str(), cell(real(r, "b0"), 7).c_str());
-    if (three_d())
-      std::printf(" %-13s %-13s", cell(real(r, "l"), 7).c_str(), cell(real(r, "d"), 7).c_str());
+                solved("a0").c_str(), solved("b0").c_str());
+    if (three_d()) std::printf(" %-13s %-13s", solved("l").c_str(), solved("d").c_str());
     // "min": converged to the certified least-squares minimum where the line equations have no
     // root (root false).
     const Value* root = find(r, "root");
-    const bool ok = converged && std::get<bool>(*converged);
-    std::printf(" %-13s %s\n", cell(real(r, "chi"), 7).c_str(),
+    std::printf(" %-13s %s\n", solved("chi").c_str(),
                 !ok ? "no" : (root && !std::get<bool>(*root) ? "min" : "yes"));
   }
 
@@ -1006,6 +1028,18 @@ int run_bem(const Problem& p, Output& out) {
 int main(int argc, char** argv) {
   try {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
+    // --help (-h) and --version anywhere: print and exit 0, nothing solved.
+    for (const std::string_view a : args) {
+      if (a == "--help" || a == "-h") {
+        std::cout << viscoroll::cli::usage()
+                  << "\n\nOptions, scene files and output fields: docs/cli.md\n";
+        return 0;
+      }
+      if (a == "--version") {
+        std::cout << "viscoroll-solve " << VISCOROLL_VERSION_STRING << "\n";
+        return 0;
+      }
+    }
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     const Problem problem = options.scene.empty() ? from_options(options) : from_scene(options);
     if (problem.method != Method::line)

@@ -114,8 +114,11 @@ TEST_CASE("cli: --format table prints a header and a row per speed", "[cli][scen
       while (cells >> word) row.push_back(word);
       REQUIRE(row.size() == columns.size());
       CHECK(std::strtod(row[1].c_str(), nullptr) == Approx(values[k]["speed"].get<double>()));
-      CHECK(std::strtod(row[3].c_str(), nullptr) ==
-            Approx(values[k]["a0"].get<double>()).epsilon(1e-6));
+      if (values[k]["converged"].get<bool>())
+        CHECK(std::strtod(row[3].c_str(), nullptr) ==
+              Approx(values[k]["a0"].get<double>()).epsilon(1e-6));
+      else
+        CHECK(row[3] == "-");
       const bool minimum = values[k].contains("root") && !values[k]["root"].get<bool>();
       CHECK(row.back() == (!values[k]["converged"].get<bool>() ? "no" : minimum ? "min" : "yes"));
     }
@@ -219,6 +222,53 @@ TEST_CASE("cli: the line method's quadrature tolerance", "[cli][line]") {
     }
   }
   CHECK(differs);
+}
+
+TEST_CASE("cli: a result that did not converge shows no numbers in the table and the CSV",
+          "[cli]") {
+  VISCOROLL_REQUIRE_SOLVE_PROGRAM();
+  // The paper's scene by the line method with one iteration allowed: not converged (exit 1).
+  const TempDir dir("viscoroll_cli_not_converged");
+  const std::string csv = (dir.path() / "sweep.csv").string();
+  const std::vector<std::string> scene = {
+      "--scene", (scenes_dir() / "paper.json").string(), "--speed", "0.5", "--max-iterations", "1"};
+  auto args = scene;
+  args.insert(args.end(), {"--format", "table", "--csv", csv});
+  const Run table = run(args);
+  const Run json = run(scene);
+  INFO(table.out << "\nstderr: " << table.err);
+  CHECK(table.status == 1);
+  const auto values = json_lines(json.out);
+  REQUIRE(values.size() == 1);
+  REQUIRE(!values[0]["converged"].get<bool>());
+  CHECK(values[0]["a0"].is_number());  // JSON keeps its fields, with the reason
+  CHECK(!values[0]["reason"].get<std::string>().empty());
+  // The table row: tau, speed, Vtau/a_lt, then a0 b0 l d chi as "-", then "no".
+  const auto rows = lines_of(table.out);
+  REQUIRE(rows.size() == 2);
+  std::istringstream cells(rows[1]);
+  std::vector<std::string> row;
+  for (std::string word; cells >> word;) row.push_back(word);
+  REQUIRE(row.size() == 9);
+  for (std::size_t k = 3; k < 8; ++k) CHECK(row[k] == "-");
+  CHECK(row[8] == "no");
+  // The CSV row: empty solution cells, the speed and the diagnostics kept.
+  std::istringstream file(slurp(csv));
+  std::string header, line;
+  std::getline(file, header);
+  std::getline(file, line);
+  const auto keys = split(header, ',');
+  const auto fields = split(line, ',');
+  REQUIRE(keys.size() == fields.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    INFO(keys[k] << " = '" << fields[k] << "'");
+    if (keys[k] == "a0" || keys[k] == "b0" || keys[k] == "l" || keys[k] == "d" ||
+        keys[k] == "chi" || keys[k] == "pmax")
+      CHECK(fields[k].empty());
+    if (keys[k] == "speed" || keys[k] == "iterations" || keys[k] == "a_long_term")
+      CHECK(!fields[k].empty());
+    if (keys[k] == "converged") CHECK(fields[k] == "false");
+  }
 }
 
 }  // namespace test_cli_outputs
