@@ -55,9 +55,6 @@ struct SpectrumStrip {
   Real centroid{};  ///< int (x - b) p dx / int p dx, the pressure's centroid ahead of the centre
                     ///< (S10)
   Real residual{};  ///< max |X r - rhs| / (|X| |r| + |rhs|) of the linear solve (S5)
-  /// Amplification of rounding in the pressure (S9), sum_i |A_i| (1 for one term); the solvers
-  /// report detail::spectrum_amplification, which also counts the rows (S7).
-  Real amplification{};
 };
 
 /// The derivatives of a SpectrumStrip's b, g0, pig1 and centroid in the right sides right[k] of
@@ -306,7 +303,6 @@ struct ConditionedSpectrum {
 template <class Real>
 ConditionedSpectrum<Real> condition_spectrum(std::vector<SpectrumTerm<Real>> active,
                                              Real time_per_length) {
-  using std::abs;
   ConditionedSpectrum<Real> out;
   out.given_terms = static_cast<int>(active.size());
   // Each kept term with the given terms merged into it (for the bound (S19)).
@@ -494,9 +490,6 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
   }
   for (const Real v : x) x_max = std::max(x_max, abs(v));
   out.residual = worst / (row_max * x_max + rhs_max);
-  Real amp = 0;
-  for (const Real w : weight) amp += abs(w);
-  out.amplification = amp;
   if (slopes != nullptr && right != nullptr) {
     // In the right sides: the system's solution for the columns d rhs / d right[k], and the
     // outputs linearised: b' = a x'_b, G0' = a^2 sum U_i', pig1' = a sum mu_i W_i', odd_i' =

@@ -529,15 +529,22 @@ class LineSolver {
     return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
   }
 
+  /// The domain of the line theory (line_domain_warnings) and chi's sign
+  /// (line_chi_sign_warnings), for a solution of either path (one term or a spectrum).
+  template <class AnySolution>
+  static void add_domain_warnings(AnySolution& sol, const Units& u) {
+    for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
+      sol.warnings.push_back(std::move(w));
+    for (auto& w : line_chi_sign_warnings(sol.converged, sol.chi))
+      sol.warnings.push_back(std::move(w));
+  }
+
   /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid
   /// (`bounds`), the bounds of the rolling contact (line_bound_warnings, to the root tolerance,
   /// plus the residual of a least-squares minimum, which meets the equations only to it); for a
   /// profile (B2), (B3) are not derived (docs/theory.md (RP10)).
   static void add_warnings(Solution& sol, const Units& u, bool bounds = true) {
-    for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
-      sol.warnings.push_back(std::move(w));
-    for (auto& w : line_chi_sign_warnings(sol.converged, sol.chi))
-      sol.warnings.push_back(std::move(w));
+    add_domain_warnings(sol, u);
     if (!bounds) return;
     const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
     for (auto& w : line_bound_warnings(sol, tolerance)) sol.warnings.push_back(std::move(w));
@@ -798,10 +805,7 @@ class LineSolver {
       }
       if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
       if (sol.converged && !sol.root) sol.warnings.push_back(detail::minimum_warning(rmax));
-      for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
-        sol.warnings.push_back(std::move(w));
-      for (auto& w : line_chi_sign_warnings(sol.converged, sol.chi))
-        sol.warnings.push_back(std::move(w));
+      add_domain_warnings(sol, u);
       return sol;
     };
     // The cold start first, a seed only where it stops short (docs/line-solver.md, "Materials

@@ -337,11 +337,11 @@ class PlaneSolver {
       s.chi_rounding = rounding * c1.m * a;
       // Converged: the root met its tolerance, the linear solve (S5) its residual, the
       // amplification is within the limit of (S20) and the load's residual within the rounding.
+      s.residual = abs(A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1);
       s.converged = converged && st.residual <= 64 * eps * Real(2 * merged.size() + 1) &&
                     conditioned.amplification <= detail::spectrum_amplification_limit<Real>() &&
-                    abs(A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1) <= rounding;
+                    s.residual <= rounding;
       s.iterations = iterations;
-      s.residual = abs(A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1);
       s.linear_residual = st.residual;
       s.amplification = conditioned.amplification;
       s.active_terms = static_cast<int>(merged.size());
