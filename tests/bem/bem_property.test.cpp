@@ -123,8 +123,8 @@ void solve_and_check(const Material& material, const viscoroll::BemOptions& opti
   // The load row of the bordered system, d_ref area sum p / P = d_ref, is one of na + 1 rows whose
   // residual GMRES brings below tol ||b||, ||b|| <= sqrt(na + 1) max(max |h|, d_ref) with
   // max |h| over the contact ~ d_ref: relative error <= tol sqrt(na + 1) up to that factor of
-  // order one; bound 4 tol sqrt(na + 1), tol = max(options.tolerance, 32 eps).
-  const double tol = std::max(options.tolerance, 32 * eps);
+  // order one; bound 4 tol sqrt(na + 1), tol = max(options.gmres_tolerance, 32 eps).
+  const double tol = std::max(options.gmres_tolerance, 32 * eps);
   const double bound = 4 * tol * std::sqrt(s.contact_cells + 1.0);
   const double load_error = std::abs(s.grid.hx * s.grid.hy * sum / scene.load - 1);
   tally.worst_load = std::max(tally.worst_load, load_error / bound);
@@ -215,10 +215,10 @@ void run_bem_cases(int count, std::uint64_t seed, int max_grid, Tally& tally) {
       bad.push_back("extent");
       options.extent = pick({1.0, 1.59, 65.0, nan, inf});
     }
-    options.tolerance = unit(rng) < 0.7 ? 1e-10 : log_uniform(-14, -4);
+    options.gmres_tolerance = unit(rng) < 0.7 ? 1e-10 : log_uniform(-14, -4);
     if (invalid()) {
-      bad.push_back("tolerance");
-      options.tolerance = pick({0.0, 1e-16, 1e-2, nan, -1e-10});
+      bad.push_back("gmres_tolerance");
+      options.gmres_tolerance = pick({0.0, 1e-16, 1e-2, nan, -1e-10});
     }
     options.max_active_set_iterations = unit(rng) < 0.9 ? 200 : 1 + static_cast<int>(3 * unit(rng));
     if (invalid()) {
@@ -262,8 +262,8 @@ void run_bem_cases(int count, std::uint64_t seed, int max_grid, Tally& tally) {
                                  : "elastic")
                 << " mu_d " << mu_d << " nu " << nu << " terms" << terms_text << " c1 " << c1
                 << " c2 " << c2 << " load " << load << " speed " << speed << "; grid "
-                << options.grid << " extent " << options.extent << " tolerance "
-                << options.tolerance << " max_active_set " << options.max_active_set_iterations
+                << options.grid << " extent " << options.extent << " gmres_tolerance "
+                << options.gmres_tolerance << " max_active_set " << options.max_active_set_iterations
                 << " max_krylov " << options.max_krylov_iterations << " restart " << options.restart
                 << " precondition " << options.precondition;
     INFO(description.str() << "; invalid: " << bad.size());

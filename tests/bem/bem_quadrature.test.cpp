@@ -62,7 +62,7 @@ TEST_CASE("bem: a BemSolver over a 24-point panel rule solves as the default", "
   const SLS material(1.0, 0.5, f, 1.0);
   viscoroll::BemOptions o;
   o.grid = 4;
-  o.tolerance = 1e-13;
+  o.gmres_tolerance = 1e-13;
   // The paper's scene (line-contact a0 = 1, l0 = 5) at V tau = a0.
   const viscoroll::BemScene<double> scene{1.0, (std::log(20.0) - 1) / 25, 5.0 / (3 * (1 + f) * c),
                                           1.0};

@@ -84,7 +84,7 @@ void check_invariants(const Cell<Real>& cell, const BemSolution<Real>& s) {
   }
   CHECK(not_finite == 0);
   CHECK(negative == 0);
-  const Real tol = std::max(Real(BemOptions{}.tolerance), 32 * eps<Real>());
+  const Real tol = std::max(Real(BemOptions{}.gmres_tolerance), 32 * eps<Real>());
   const Real bound = 4 * tol * std::sqrt(Real(s.contact_cells + 1));
   CHECK(abs(s.grid.hx * s.grid.hy * sum / cell.load() - 1) <= bound);
   CHECK(abs(s.load / cell.load() - 1) <= bound);

@@ -65,21 +65,32 @@ struct BemOptions {
   int grid = 16;
   /// The grid covers at least `extent` semi-axes each way from the roller's lowest point.
   double extent = 1.6;
-  /// GMRES stops at relative residual `tolerance` (or 32 eps of the scalar, if larger); the
-  /// active set must then be unchanged.
-  double tolerance = 1e-10;
+  /// The accuracy asked of d and chi, relative (docs/theory.md, section 17): 0 solves once on
+  /// `grid`; a tolerance in [1e-4, 0.5] solves on `grid`, 2 grid, 4 grid, ... elements up to
+  /// `max_grid`, each grid after the first sized across by the contact the one before found,
+  /// until the estimated errors of d and of chi (BemErrorEstimate) are at most `tolerance` times
+  /// |d| and |chi| (chi's: or 1e-6 C1 a_H, a_H the long-term Hertz semi-axis, when |chi| is
+  /// below that), and returns the last grid's solution with the estimates
+  /// (BemSolution::error, tolerance_met; a warning when the tolerance is not met).
+  double tolerance = 0;
+  /// The largest grid of the refinement `tolerance` asks for (elements per semi-axis).
+  int max_grid = 128;
+  /// GMRES stops at relative residual `gmres_tolerance` (or 32 eps of the scalar, if larger);
+  /// the active set must then be unchanged.
+  double gmres_tolerance = 1e-10;
   int max_active_set_iterations = 200;
   int max_krylov_iterations = 5000;  ///< GMRES steps over all active-set iterations
   int restart = 80;                  ///< GMRES steps per cycle
   /// GMRES' relative residual while the active set changes (numerics/active_set.hpp, inexact
-  /// early solves); the set that one leaves unchanged is solved again to `tolerance`, which alone
-  /// decides convergence. 0 solves every set to `tolerance`.
+  /// early solves); the set that one leaves unchanged is solved again to `gmres_tolerance`, which
+  /// alone decides convergence. 0 solves every set to `gmres_tolerance`.
   double coarse_tolerance = 1e-3;
   /// GMRES' relative residual of a final solve of the converged active set (or 32 eps of the
-  /// scalar, if larger; numerics/active_set.hpp): GMRES' `tolerance` bounds the pressure only to
+  /// scalar, if larger; numerics/active_set.hpp): GMRES' `gmres_tolerance` bounds the pressure to
   /// about cond times it (a(0) and the peak pressure to about 1e-8 at 1e-10), and two iterations
   /// that reach the same set differently (coarse_tolerance or not) differ by that much; solved
-  /// again to 1e-13, they agree to 1e-10 (docs/bem.md, B11). 0 (or >= tolerance): no final solve.
+  /// again to 1e-13, they agree to 1e-10 (docs/bem.md, B11). 0 (or >= gmres_tolerance): no final
+  /// solve.
   double final_tolerance = 1e-13;
   /// Threads that build the influence table (its rows are independent; the result does not
   /// depend on the count). 1 leaves the other cores to a sweep over speeds.
@@ -100,8 +111,18 @@ struct BemOptions {
                     "(2 ceil(extent grid) + 1)^2 <= 4194304 cells (grid <= 639 at extent = " +
                         detail::format_value(extent) + ": " + std::to_string(side * side) +
                         " cells asked)");
-    detail::require(tolerance >= 1e-15 && tolerance <= 1e-3, "tolerance", tolerance,
-                    "1e-15 <= tolerance <= 1e-3");
+    detail::require(tolerance == 0 || (tolerance >= 1e-4 && tolerance <= 0.5), "tolerance",
+                    tolerance, "0 (one grid) or 1e-4 <= tolerance <= 0.5");
+    if (tolerance > 0) {
+      detail::require(max_grid >= grid && max_grid <= 4096, "max_grid", max_grid,
+                      "grid <= max_grid <= 4096 (grid = " + std::to_string(grid) + ")");
+      const long long top = 2 * static_cast<long long>(std::ceil(extent * max_grid - 1e-9)) + 1;
+      detail::require(top * top <= max_cells, "max_grid", max_grid,
+                      "(2 ceil(extent max_grid) + 1)^2 <= 4194304 cells (" +
+                          std::to_string(top * top) + " cells asked)");
+    }
+    detail::require(gmres_tolerance >= 1e-15 && gmres_tolerance <= 1e-3, "gmres_tolerance",
+                    gmres_tolerance, "1e-15 <= gmres_tolerance <= 1e-3");
     detail::require(coarse_tolerance == 0 || (coarse_tolerance >= 1e-15 && coarse_tolerance <= 0.1),
                     "coarse_tolerance", coarse_tolerance,
                     "0 (off) or 1e-15 <= coarse_tolerance <= 0.1");
@@ -177,6 +198,22 @@ RowContact<Real> row_contact(const BemGrid<Real>& g, const std::vector<Real>& p,
 
 }  // namespace bem
 
+/// The estimated discretisation errors of a boundary-element solution refined to a tolerance
+/// (BemOptions::tolerance): each 5/4 of the change of its quantity from the grid before (cells
+/// at least twice as large), which bounds the error of an O(h^p), p >= 1, convergence with a
+/// margin (docs/theory.md, section 17, (E1)-(E2)); a0, b0 and l, edges located to a fraction of
+/// a cell (B12), add a quarter of the cell (hx, hy). Absolute, in the quantity's units; NaN
+/// where not estimated.
+template <RealScalar Real>
+struct BemErrorEstimate {
+  Real d = std::numeric_limits<Real>::quiet_NaN();
+  Real chi = std::numeric_limits<Real>::quiet_NaN();
+  Real a0 = std::numeric_limits<Real>::quiet_NaN();
+  Real b0 = std::numeric_limits<Real>::quiet_NaN();
+  Real l = std::numeric_limits<Real>::quiet_NaN();
+  Real p_max = std::numeric_limits<Real>::quiet_NaN();  ///< of peak_pressure()
+};
+
 /// The boundary-element solution: pressure on the grid, the contact's measures, diagnostics.
 template <RealScalar Real>
 struct BemSolution {
@@ -196,13 +233,24 @@ struct BemSolution {
   int iterations;         ///< active-set iterations
   int krylov_iterations;  ///< GMRES steps over all active-set iterations
   Real residual;          ///< max complementarity violation relative to d (B11)
-  /// Quantities the solution does not claim although it converged (B12's edge model violated).
+  /// Quantities the solution does not claim although it converged (B12's edge model violated),
+  /// and a tolerance the refinement did not meet.
   std::vector<std::string> warnings;
+  int elements;  ///< elements per semi-axis of `grid` (BemOptions::grid, or the refinement's)
+  /// The estimated discretisation errors (absolute; NaN where not estimated: one grid).
+  BemErrorEstimate<Real> error;
+  /// BemOptions::tolerance > 0 and the estimates of d and chi met it.
+  bool tolerance_met;
   double seconds_setup;  ///< influence table and its transform
   double seconds_solve;  ///< active-set iteration
 
   /// The pressure of cell (i, j).
   Real p(int i, int j) const { return pressure[grid.index(i, j)]; }
+
+  /// The largest cell pressure (the first of equal ones; 0 without cells).
+  Real peak_pressure() const {
+    return pressure.empty() ? Real(0) : *std::max_element(pressure.begin(), pressure.end());
+  }
 
   /// The contact along the roller, row by row: F0 = hx sum_i p (the midpoint rule of Eq. 33 on
   /// the cells), the edges of each row's contact (the stretch of contact cells around the row's

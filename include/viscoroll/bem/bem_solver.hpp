@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -159,7 +160,7 @@ class BemSolver {
     numerics::ActiveSetState<Real> state{
         .p = std::vector<Real>(n, Real(0)), .d = hertz.d, .active = std::vector<char>(n, 0)};
     if (start != nullptr && start->grid.nx == grid.nx && start->grid.ny == grid.ny &&
-        start->pressure.size() == n) {
+        start->grid.hx == grid.hx && start->grid.hy == grid.hy && start->pressure.size() == n) {
       for (std::size_t q = 0; q < n; ++q) {
         state.active[q] = start->pressure[q] > 0;
         state.p[q] = start->pressure[q] * scene.load / start->load;
@@ -192,8 +193,9 @@ class BemSolver {
       for (int i = 0; i < grid.nx; ++i)
         h[grid.index(i, j)] = scene.gap_profile(grid.x(i), grid.y(j));
     auto state = initial_state(scene, grid, hertz, terms, compliance, start);
-    // The requested tolerance, but no tighter than the scalar allows (32 eps).
-    const Real tol = std::max(Real(options_.tolerance), 32 * std::numeric_limits<Real>::epsilon());
+    // GMRES' tolerance, but no tighter than the scalar allows (32 eps).
+    const Real tol =
+        std::max(Real(options_.gmres_tolerance), 32 * std::numeric_limits<Real>::epsilon());
     // The final solve's, likewise (none where that is not below tol, e.g. in float).
     const Real final_tol =
         options_.final_tolerance > 0
@@ -267,6 +269,9 @@ class BemSolver {
             .krylov_iterations = report.krylov_iterations,
             .residual = std::max(violation, abs(total - scene.load) / scene.load),
             .warnings = {},
+            .elements = 0,
+            .error = {},
+            .tolerance_met = false,
             .seconds_setup = 0,
             .seconds_solve = 0};
   }
@@ -304,7 +309,7 @@ class BemSolver {
               "leading-edge layer V tau/(1 + f) = " +
               detail::format_binary(memory / (1 + f_total), length_exponent) +
               " is under a quarter cell (hx = " + detail::format_binary(grid.hx, length_exponent) +
-              "): a0 and b0 are not resolved (d, chi and the load are)");
+              "): a0 and b0 are not resolved");
           break;
         }
       }
@@ -457,11 +462,12 @@ class BemSolver {
     return out;
   }
 
-  /// The grid in the units of `u`.
-  BemGrid<Real> grid_in_units(const HertzContact<Real>& hertz) const {
-    const int n = options_.grid;
+  /// The grid of `n` elements per semi-axis in the units of `u`: of the long-term Hertz ellipse,
+  /// or across (x) of `across` when given (the refinement's, which sizes the cells by the contact
+  /// the grid before found).
+  BemGrid<Real> grid_in_units(const HertzContact<Real>& hertz, int n, Real across = 0) const {
     const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
-    return {2 * m + 1, 2 * m + 1, hertz.a / Real(n), hertz.b / Real(n)};
+    return {2 * m + 1, 2 * m + 1, (across > 0 ? across : hertz.a) / Real(n), hertz.b / Real(n)};
   }
 
   /// Hertz's long-term contact (B8) in the units of `u`.
@@ -473,6 +479,8 @@ class BemSolver {
   static std::optional<Solution> start_in_units(const Solution* start, const Scaled& u) {
     if (start == nullptr) return std::nullopt;
     Solution s = *start;
+    s.grid.hx = times_power_of_two(s.grid.hx, -u.length);
+    s.grid.hy = times_power_of_two(s.grid.hy, -u.length);
     for (auto& p : s.pressure) p = times_power_of_two(p, -u.pressure);
     s.load = times_power_of_two(s.load, -u.pressure - 2 * u.length);
     s.d = times_power_of_two(s.d, -u.displacement);
@@ -512,6 +520,14 @@ class BemSolver {
                    times_power_of_two(s.long_term.d, w), times_power_of_two(s.long_term.p0, pe)};
   }
 
+  /// One solve on the grid of `n` elements per semi-axis (across: of `across`, in the units of
+  /// `u`, when given), in the caller's units.
+  Solution solve_on(const Scaled& u, int n, const Solution* start, Real across = 0) const;
+
+  /// The refinement of BemOptions::tolerance (docs/theory.md, "The boundary-element solver's
+  /// error estimate").
+  Solution refine(const Scaled& u, const Solution* start) const;
+
   Material material_;
   BemOptions options_;
 };
@@ -521,11 +537,20 @@ requires std::same_as<typename Material::real_type, Real> &&
     NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
 auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
                                                   const Solution* start) const -> Solution {
+  const Scaled u = scaled(scene);
+  if (options_.tolerance > 0) return refine(u, start);
+  return solve_on(u, options_.grid, start);
+}
+
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+requires std::same_as<typename Material::real_type, Real> &&
+    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+auto BemSolver<Real, Material, Quadrature>::solve_on(const Scaled& u, int n, const Solution* start,
+                                                     Real across) const -> Solution {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  const Scaled u = scaled(scene);
   const auto hertz = hertz_in_units(u, material_.creep_ratio());
-  const auto grid = grid_in_units(hertz);
+  const auto grid = grid_in_units(hertz, n, across);
   if (u.scene.profile) validate_profile(u.scene, grid);
   const auto terms = effective_terms(grid, u.scene.speed, u.terms);
   const Real c = u.compliance;
@@ -538,8 +563,82 @@ auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
   Solution sol =
       iterate(u.scene, grid, hertz, op, symbol, terms, c, u.length, seed ? &*seed : nullptr);
   to_caller_units(sol, u);
+  sol.elements = n;
   sol.seconds_setup = setup;
   sol.seconds_solve = std::chrono::duration<double>(clock::now() - t0).count() - setup;
+  return sol;
+}
+
+template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
+requires std::same_as<typename Material::real_type, Real> &&
+    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Solution* start) const
+    -> Solution {
+  using std::abs;
+  const Real tol = Real(options_.tolerance);
+  // chi's floor: 1e-6 C1 a_H, the long-term Hertz semi-axis in the caller's units.
+  const HertzContact<Real> hertz = hertz_in_units(u, material_.creep_ratio());
+  const Real chi_floor = Real(1e-6) * times_power_of_two(u.scene.c1 * hertz.a, u.displacement -
+                                                                                   u.length);
+  double setup = 0, seconds = 0;
+  std::optional<Solution> coarse, last;
+  // The cells' semi-axis across: the long-term Hertz a_H, then the reach of the contact found on
+  // the grid before, |x| + hx/2 of its farthest loaded cell, when that is less (the faster, the
+  // narrower the contact: the glassy one is (1 + f)^(-1/3) a_H wide), so that hx at least halves.
+  Real across = hertz.a;
+  for (int n = options_.grid; n <= options_.max_grid; n *= 2) {
+    last = solve_on(u, n, start, across);
+    Solution& s = *last;
+    setup += s.seconds_setup;
+    seconds += s.seconds_solve;
+    Real reach = 0;
+    for (int j = 0; j < s.grid.ny; ++j)
+      for (int i = 0; i < s.grid.nx; ++i)
+        if (s.p(i, j) > 0) reach = std::max(reach, abs(s.grid.x(i)) + s.grid.hx / 2);
+    if (reach > 0) across = std::min(across, times_power_of_two(reach, -u.length));
+    // A grid too coarse for the contact (fewer than 3 cells across) is refined; any other
+    // failure is returned as it is.
+    if (!s.converged) {
+      if (s.reason.starts_with("contact resolved by fewer than 3 cells")) continue;
+      break;
+    }
+    if (coarse) {
+      // (E1)-(E2): the change from the grid before, times Roache's safety factor 5/4; the
+      // edges, located to a quarter cell (B12, B13), also carry that.
+      const Real safety = Real(5) / 4, qx = s.grid.hx / 4, qy = s.grid.hy / 4;
+      s.error = {.d = safety * abs(s.d - coarse->d),
+                 .chi = safety * abs(s.chi - coarse->chi),
+                 .a0 = safety * abs(s.a0 - coarse->a0) + qx,
+                 .b0 = safety * abs(s.b0 - coarse->b0) + qx,
+                 .l = safety * abs(s.l - coarse->l) + qy,
+                 .p_max = safety * abs(s.peak_pressure() - coarse->peak_pressure())};
+      s.tolerance_met = s.error.d <= tol * abs(s.d) &&
+                        s.error.chi <= tol * std::max(abs(s.chi), chi_floor);
+      if (s.tolerance_met) break;
+    }
+    coarse = s;
+  }
+  Solution sol = std::move(*last);
+  sol.seconds_setup = setup;
+  sol.seconds_solve = seconds;
+  if (sol.converged && !sol.tolerance_met) {
+    // The tolerance as given, an estimate to two digits.
+    const auto percent = [](Real x, int digits = std::numeric_limits<Real>::digits10) {
+      std::ostringstream out;
+      out.precision(digits);
+      out << Real(100) * x << "%";
+      return out.str();
+    };
+    sol.warnings.push_back(
+        !(boost::math::isfinite)(sol.error.d)
+            ? "the tolerance " + percent(tol) + " is not verified: only the grid " +
+                  std::to_string(sol.elements) + " resolved the contact (max_grid " +
+                  std::to_string(options_.max_grid) + ")"
+            : "the tolerance " + percent(tol) + " is not met at the largest grid " +
+                  std::to_string(sol.elements) + " (max_grid): estimated errors " +
+                  percent(sol.error.d / abs(sol.d), 2) + " in d, " +
+                  percent(sol.error.chi / std::max(abs(sol.chi), chi_floor), 2) + " in chi");
+  }
   return sol;
 }
 
@@ -549,7 +648,7 @@ requires std::same_as<typename Material::real_type, Real> &&
 auto BemSolver<Real, Material, Quadrature>::grid_for(const BemScene<Real>& scene) const
     -> BemGrid<Real> {
   const Scaled u = scaled(scene);
-  BemGrid<Real> g = grid_in_units(hertz_in_units(u, material_.creep_ratio()));
+  BemGrid<Real> g = grid_in_units(hertz_in_units(u, material_.creep_ratio()), options_.grid);
   const auto inputs = [&] { return u.inputs; };
   g.hx = detail::representable(g.hx, u.length, "the cell width hx", inputs, false);
   g.hy = detail::representable(g.hy, u.length, "the cell length hy", inputs, false);
