@@ -478,6 +478,8 @@ struct Problem {
   /// --setting fast: the line method's fast setting, on 6-point panels (FastLineSolverD) for a
   /// material of one relaxation time.
   bool fast = false;
+  /// --tolerance (bem): BemOptions::tolerance.
+  std::optional<double> tolerance = std::nullopt;
 };
 
 /// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
@@ -502,6 +504,7 @@ Problem from_options(const SolveOptions& o) {
             o.threads, {},     {},     {},       line_options(o, setting),
             {}};
   p.fast = setting == viscoroll::cli::LineSetting::fast;
+  p.tolerance = o.tolerance;
   return p;
 }
 
@@ -589,6 +592,7 @@ Problem from_scene(const SolveOptions& o) {
   const auto setting =
       o.setting.value_or(scene.setting.value_or(viscoroll::cli::LineSetting::standard));
   p.line = line_options(o, setting);
+  p.tolerance = o.tolerance;
   p.fast = setting == viscoroll::cli::LineSetting::fast;
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
@@ -900,9 +904,15 @@ int run_line(const Problem& p, Output& out) {
   });
 }
 
-/// --grid for the bem method: elements per semi-axis, default 16.
+/// The bem method's relative tolerance in d and chi (BemOptions::tolerance, docs/theory.md
+/// section 17): --tolerance, else 0 (one grid).
+double bem_tolerance(const Problem& p) { return p.tolerance.value_or(0.0); }
+
+/// --grid for the bem method: elements per semi-axis, default 16 (8, the refinement's first
+/// grid, with a tolerance).
 int bem_grid(const Problem& p) {
-  constexpr long default_grid = 16, max_grid = 512;
+  constexpr long max_grid = 512;
+  const long default_grid = bem_tolerance(p) > 0 ? 8 : 16;
   const long n = p.grid.value_or(default_grid);
   if (n < 2 || n > max_grid)
     throw std::invalid_argument(
@@ -916,7 +926,7 @@ int bem_grid(const Problem& p) {
 /// ellipsoid's are -l, l of (B12)).
 template <class Solution>
 Record bem_record(Record head, const Solution& s, const viscoroll::AlongRoller<double>& along,
-                  double seconds, int grid, bool axial) {
+                  double seconds, double tolerance, bool axial) {
   std::size_t peak = 0;
   for (std::size_t q = 0; q < s.pressure.size(); ++q)
     if (s.pressure[q] > s.pressure[peak]) peak = q;
@@ -940,8 +950,16 @@ Record bem_record(Record head, const Solution& s, const viscoroll::AlongRoller<d
                  {"iterations", static_cast<long long>(s.iterations)},
                  {"gmres_iterations", static_cast<long long>(s.krylov_iterations)},
                  {"residual", s.residual},
-                 {"grid", static_cast<long long>(grid)},
+                 {"grid", static_cast<long long>(s.elements)},
                  {"cells", static_cast<long long>(s.grid.size())},
+                 {"tolerance", tolerance},
+                 {"tolerance_met", s.tolerance_met},
+                 {"error_d", s.error.d},
+                 {"error_chi", s.error.chi},
+                 {"error_a0", s.error.a0},
+                 {"error_b0", s.error.b0},
+                 {"error_l", s.error.l},
+                 {"error_pmax", s.error.p_max},
                  {"reason", s.reason},
                  {"warnings", s.warnings}};
   head.insert(head.end(), tail.begin(), tail.end());
@@ -971,6 +989,8 @@ int bem_table_threads(const Problem& p) {
 int run_bem(const Problem& p, Output& out) {
   viscoroll::BemOptions options;
   options.grid = bem_grid(p);
+  options.tolerance = bem_tolerance(p);
+  if (options.tolerance > 0) options.max_grid = std::max(options.max_grid, options.grid);
   options.threads = bem_table_threads(p);
   // A roller of finite length: its scene (gap, body, grid) from bem_scene, sized by the
   // long-term compliance, which neither tau nor the temperature changes; else the ellipsoid's.
@@ -1004,7 +1024,7 @@ int run_bem(const Problem& p, Output& out) {
                               {"temperature", temperature},
                               {"a_T", a_t},
                               {"speed", scene.speed}},
-                             s, along, seconds, options.grid, axial));
+                             s, along, seconds, options.tolerance, axial));
           out.add_profile(std::nan(""), temperature, scene.speed, along);
           note_outcome(out, "bem", temperature_label(p, temperature, scene.speed), s);
         });
@@ -1017,7 +1037,7 @@ int run_bem(const Problem& p, Output& out) {
                             {"tau", tau},
                             {"speed", scene.speed},
                             {"vtau", scene.speed * tau}},
-                           s, along, seconds, options.grid, axial));
+                           s, along, seconds, options.tolerance, axial));
         out.add_profile(tau, std::nan(""), scene.speed, along);
         note_outcome(out, "bem", label(p, tau, scene.speed), s);
       });
@@ -1052,6 +1072,10 @@ int main(int argc, char** argv) {
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line");
+    if (options.tolerance && problem.method != Method::bem)
+      throw std::invalid_argument(
+          "viscoroll-solve: --tolerance is valid only with --method bem (the plane method is "
+          "exact to rounding; the line method's error is its theory's: docs/cli.md)");
     if (!options.profile_out.empty() && problem.method == Method::plane)
       throw std::invalid_argument(
           "viscoroll-solve: --profile-out is valid only with --method line or bem (the contact "

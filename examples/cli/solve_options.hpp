@@ -90,18 +90,22 @@ struct SolveOptions {
   /// on 6-point panels (FastLineSolverD) for a material of one relaxation time; the other line
   /// options given override it.
   std::optional<LineSetting> setting;
+  /// --tolerance T (0, or 1e-4 <= T <= 0.5): the bem method's BemOptions::tolerance, the
+  /// relative accuracy asked of d and chi, refining from --grid (default 8); none or 0: one grid.
+  std::optional<double> tolerance;
 };
 
 inline std::string usage() {
   return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
          "[--csv FILE] [--plot DIR] [--threads N] [--oversampling K] [--basis t2|s|mapped] "
-         "[--max-iterations N] [--quadrature-tolerance TOL] [--setting default|fast]\n"
+         "[--max-iterations N] [--quadrature-tolerance TOL] [--setting default|fast] "
+         "[--tolerance T]\n"
          "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
          "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
          "[--plot DIR] [--profile-out FILE.csv] [--threads N] [--oversampling K] "
          "[--basis t2|s|mapped] [--max-iterations N] [--quadrature-tolerance TOL] "
-         "[--setting default|fast]";
+         "[--setting default|fast] [--tolerance T]";
 }
 
 /// A finite number, the whole of `text`.
@@ -158,7 +162,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
                                                    "--max-iterations",
                                                    "--profile-out",
                                                    "--quadrature-tolerance",
-                                                   "--setting"};
+                                                   "--setting",
+                                                   "--tolerance"};
   // Given by a scene file; with --scene they are a conflict.
   static const std::vector<std::string_view> scene_keys = {"--mu-d", "--nu", "--f",   "--tau",
                                                            "--c1",   "--c2", "--load"};
@@ -199,8 +204,8 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
             "--grid, --speed, --temperature, --format, --csv, --plot, --profile-out, --threads, "
-            "--oversampling, --basis, --max-iterations, --quadrature-tolerance and --setting may "
-            "go with it)");
+            "--oversampling, --basis, --max-iterations, --quadrature-tolerance, --setting and "
+            "--tolerance may go with it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
@@ -258,6 +263,15 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
           "to rounding), got '" +
           std::string(given["--quadrature-tolerance"]) + "'");
     o.quadrature_tolerance = tol;
+  }
+  if (given.count("--tolerance")) {
+    const double tol = parse_number("--tolerance", given["--tolerance"]);
+    if (!(tol == 0 || (tol >= 1e-4 && tol <= 0.5)))
+      throw std::invalid_argument(
+          "viscoroll-solve: --tolerance expects 0 (one grid) or 1e-4 <= T <= 0.5 (the bem "
+          "method's relative accuracy in d and chi), got '" +
+          std::string(given["--tolerance"]) + "'");
+    o.tolerance = tol;
   }
   if (given.count("--basis")) {
     o.basis = std::string(given["--basis"]);
