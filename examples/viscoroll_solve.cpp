@@ -15,7 +15,8 @@
 // solve.
 // --method bem: the 3-D boundary-element solver (--grid N elements per semi-axis of the static
 // long-term Hertz ellipse, default 16); each line carries a0 = a(0), b0 = b(0), l, y_minus,
-// y_plus, d, chi, the Hertz a_long_term, l0, d0, grid, cells, reason, iterations (active set),
+// y_plus, d, chi, a_long_term, l0, d0 (the static long-term contact: Hertz's for the ellipsoid, the
+// line theory's for a roller of finite length), grid, cells, reason, iterations (active set),
 // gmres_iterations, residual and warnings. docs/bem.md. --threads N also builds each solve's
 // influence table on threads (BemOptions::threads): the N threads are shared by the sweep's
 // chunks running at once (bem_table_threads). Warnings of either method also go to stderr, one
@@ -25,6 +26,8 @@
 // over PronyRelaxation<double> at each temperature (--temperature, else the scene's, else t_ref)
 // and each speed, each line carrying temperature and a_T in place of tau and vtau (and the
 // spectrum's active_terms in plane and line).
+// Every record carries after chi the rolling resistance F = chi W, the power loss F V and the
+// energy per revolution F 2 pi R (cli/engineering.hpp; per unit length for the plane method).
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -56,7 +59,10 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/bem_record.hpp"
+#include "cli/engineering.hpp"
 #include "cli/line_record.hpp"
+#include "cli/plane_record.hpp"
 #include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
@@ -165,8 +171,13 @@ std::string csv_header(const Record& r) {
 /// iteration's diagnostics): a result that did not converge shows none of them in the table and
 /// the CSV (docs/cli.md, "Output").
 bool solution_field(std::string_view key) {
-  static constexpr std::string_view keys[] = {
-      "a0", "b0", "l", "y_minus", "y_plus", "f0_max", "f0_max_y", "d", "chi", "pmax", "pmax_x"};
+  static constexpr std::string_view keys[] = {"a0",         "b0",
+                                              "l",          "y_minus",
+                                              "y_plus",     "f0_max",
+                                              "f0_max_y",   "d",
+                                              "chi",        "rolling_resistance",
+                                              "power_loss", "energy_per_revolution",
+                                              "pmax",       "pmax_x"};
   return std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
 }
 
@@ -349,7 +360,10 @@ class Output {
     else
       std::printf("%-12s %-12s %-12s %-13s %-13s", "tau", "speed", "Vtau/a_lt", "a0", "b0");
     if (three_d()) std::printf(" %-13s %-13s", "l", "d");
-    std::printf(" %-13s %s\n", "chi", "converged");
+    // The rolling resistance and the power loss in a scene file's SI units (per metre of roller
+    // for the plane method); with options, in the options' consistent units.
+    std::printf(" %-13s %-13s %-13s %s\n", "chi", three_d() ? "F_N" : "F_N/m",
+                three_d() ? "P_W" : "P_W/m", "converged");
   }
 
   static std::string cell(double x, int precision) {
@@ -375,7 +389,8 @@ class Output {
     // "min": converged to the certified least-squares minimum where the line equations have no
     // root (root false).
     const Value* root = find(r, "root");
-    std::printf(" %-13s %s\n", solved("chi").c_str(),
+    std::printf(" %-13s %-13s %-13s %s\n", solved("chi").c_str(),
+                solved("rolling_resistance").c_str(), solved("power_loss").c_str(),
                 !ok ? "no" : (root && !std::get<bool>(*root) ? "min" : "yes"));
   }
 
@@ -478,6 +493,8 @@ struct Problem {
   /// --setting fast: the line method's fast setting, on 6-point panels (FastLineSolverD) for a
   /// material of one relaxation time.
   bool fast = false;
+  /// The rolling radius of energy_per_revolution: the scene file's `radius`, else 1/c1.
+  double radius = 0;
   /// --tolerance (bem): BemOptions::tolerance.
   std::optional<double> tolerance = std::nullopt;
 };
@@ -504,6 +521,7 @@ Problem from_options(const SolveOptions& o) {
             o.threads, {},     {},     {},       line_options(o, setting),
             {}};
   p.fast = setting == viscoroll::cli::LineSetting::fast;
+  p.radius = 1 / p.c1;
   p.tolerance = o.tolerance;
   return p;
 }
@@ -619,11 +637,11 @@ Problem from_scene(const SolveOptions& o) {
         using R = std::decay_t<decltype(r)>;
         using viscoroll::Tilted;
         if constexpr (std::is_same_v<R, EllipsoidProfile>) {
-          p.c1 = r.c1, p.c2 = r.c2;
+          p.c1 = r.c1, p.c2 = r.c2, p.radius = 1 / r.c1;
         } else if constexpr (std::is_same_v<R, CylinderProfile>) {
-          p.c1 = 1 / r.radius;
+          p.c1 = 1 / r.radius, p.radius = r.radius;
         } else {
-          p.c1 = 1 / r.radius;
+          p.c1 = 1 / r.radius, p.radius = r.radius;
           // The library validates what the reader has not (a table's spline); its message names
           // the parameter, here under the scene's key.
           try {
@@ -749,6 +767,15 @@ double required_c2(const Problem& p, const char* method) {
 /// The prony material at `temperature` (the reference material when there is no shift law).
 viscoroll::PronyRelaxation<double> prony_at(const Problem& p, double temperature);
 
+/// The load, `speed` and rolling radius of the problem, for the record's engineering_fields.
+viscoroll::cli::Duty duty(const Problem& p, double speed) { return {p.load, speed, p.radius}; }
+
+/// `head` followed by `fields`.
+Record with_fields(Record head, const Record& fields) {
+  head.insert(head.end(), fields.begin(), fields.end());
+  return head;
+}
+
 int run_plane(const Problem& p, Output& out) {
   if (p.prony)
     return run_sweeps(
@@ -758,24 +785,13 @@ int run_plane(const Problem& p, Output& out) {
         },
         [&](double temperature) { return viscoroll::PlaneSolver(prony_at(p, temperature)); },
         [&](double temperature, const auto& scene, const auto& s, double seconds) {
-          const auto peak = s.peak();
           const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
-          out.add({{"method", std::string("plane")},
-                   {"temperature", temperature},
-                   {"a_T", a_t},
-                   {"speed", scene.speed},
-                   {"a0", s.a},
-                   {"b0", s.b},
-                   {"a_long_term", s.a_long_term},
-                   {"chi", s.chi},
-                   {"pmax", peak.pressure},
-                   {"pmax_x", peak.x},
-                   {"active_terms", static_cast<long long>(s.active_terms)},
-                   {"spectrum_error", s.spectrum_error},
-                   {"seconds", seconds},
-                   {"converged", s.converged},
-                   {"iterations", static_cast<long long>(s.iterations)},
-                   {"residual", s.residual}});
+          out.add(
+              with_fields({{"method", std::string("plane")},
+                           {"temperature", temperature},
+                           {"a_T", a_t},
+                           {"speed", scene.speed}},
+                          viscoroll::cli::plane_fields<Record>(s, duty(p, scene.speed), seconds)));
           if (!s.converged)
             out.note("viscoroll-solve: plane solution for " +
                      temperature_label(p, temperature, scene.speed) + " did not converge");
@@ -787,21 +803,12 @@ int run_plane(const Problem& p, Output& out) {
       },
       [&](double tau) { return viscoroll::PlaneSolverD(material(p, tau)); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
-        const auto peak = s.peak();
-        out.add({{"method", std::string("plane")},
-                 {"tau", tau},
-                 {"speed", scene.speed},
-                 {"vtau", scene.speed * tau},
-                 {"a0", s.a},
-                 {"b0", s.b},
-                 {"a_long_term", s.a_long_term},
-                 {"chi", s.chi},
-                 {"pmax", peak.pressure},
-                 {"pmax_x", peak.x},
-                 {"seconds", seconds},
-                 {"converged", s.converged},
-                 {"iterations", static_cast<long long>(s.iterations)},
-                 {"residual", s.residual}});
+        out.add(
+            with_fields({{"method", std::string("plane")},
+                         {"tau", tau},
+                         {"speed", scene.speed},
+                         {"vtau", scene.speed * tau}},
+                        viscoroll::cli::plane_fields<Record>(s, duty(p, scene.speed), seconds)));
         if (!s.converged)
           out.note("viscoroll-solve: plane solution for " + label(p, tau, scene.speed) +
                    " did not converge");
@@ -845,7 +852,8 @@ int run_line(const Problem& p, Output& out) {
                       {"speed", scene.speed},
                       {"vtau", scene.speed * tau}};
           const Record middle = {{"pmax", peak.pressure}, {"pmax_x", peak.x}};
-          const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
+          const Record fields =
+              viscoroll::cli::line_fields(s, middle, duty(p, scene.speed), options.terms, seconds);
           r.insert(r.end(), fields.begin(), fields.end());
           out.add(std::move(r));
           if (out.wants_profile())
@@ -872,7 +880,8 @@ int run_line(const Problem& p, Output& out) {
                       {"speed", scene.speed}};
           const Record middle = {{"active_terms", static_cast<long long>(s.active_terms)},
                                  {"spectrum_error", s.spectrum_error}};
-          const Record fields = viscoroll::cli::line_fields(s, middle, options.terms, seconds);
+          const Record fields =
+              viscoroll::cli::line_fields(s, middle, duty(p, scene.speed), options.terms, seconds);
           r.insert(r.end(), fields.begin(), fields.end());
           out.add(std::move(r));
           // p_max is NaN (an empty cell) unless one term is active (along_roller).
@@ -921,51 +930,6 @@ int bem_grid(const Problem& p) {
   return static_cast<int>(n);
 }
 
-/// The fields of a bem record after its `head` (method and the material's keys, speed).
-/// `axial`: a roller of finite length, whose contact's ends are along_roller()'s (the
-/// ellipsoid's are -l, l of (B12)).
-template <class Solution>
-Record bem_record(Record head, const Solution& s, const viscoroll::AlongRoller<double>& along,
-                  double seconds, double tolerance, bool axial) {
-  std::size_t peak = 0;
-  for (std::size_t q = 0; q < s.pressure.size(); ++q)
-    if (s.pressure[q] > s.pressure[peak]) peak = q;
-  const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s.grid.nx));
-  Record tail = {{"a0", s.a0},
-                 {"b0", s.b0},
-                 {"l", s.l},
-                 {"y_minus", axial ? along.y_minus : -s.l},
-                 {"y_plus", axial ? along.y_plus : s.l},
-                 {"f0_max", along.f0_max},
-                 {"f0_max_y", along.f0_max_y},
-                 {"d", s.d},
-                 {"a_long_term", s.long_term.a},
-                 {"l0", s.long_term.b},
-                 {"d0", s.long_term.d},
-                 {"chi", s.chi},
-                 {"pmax", s.pressure[peak]},
-                 {"pmax_x", s.grid.x(peak_i)},
-                 {"seconds", seconds},
-                 {"converged", s.converged},
-                 {"iterations", static_cast<long long>(s.iterations)},
-                 {"gmres_iterations", static_cast<long long>(s.krylov_iterations)},
-                 {"residual", s.residual},
-                 {"grid", static_cast<long long>(s.elements)},
-                 {"cells", static_cast<long long>(s.grid.size())},
-                 {"tolerance", tolerance},
-                 {"tolerance_met", s.tolerance_met},
-                 {"error_d", s.error.d},
-                 {"error_chi", s.error.chi},
-                 {"error_a0", s.error.a0},
-                 {"error_b0", s.error.b0},
-                 {"error_l", s.error.l},
-                 {"error_pmax", s.error.p_max},
-                 {"reason", s.reason},
-                 {"warnings", s.warnings}};
-  head.insert(head.end(), tail.begin(), tail.end());
-  return head;
-}
-
 /// The prony material at `temperature` (the reference material when there is no shift law).
 viscoroll::PronyRelaxation<double> prony_at(const Problem& p, double temperature) {
   return p.shift ? viscoroll::at_temperature(*p.prony, *p.shift, temperature) : *p.prony;
@@ -1010,6 +974,25 @@ int run_bem(const Problem& p, Output& out) {
     return scene;
   };
   const bool axial = bool(p.roller);
+  // The static long-term contact of a roller of finite length by the line theory, once (neither
+  // tau nor the temperature changes the long-term compliance); the ellipsoid's is Hertz's, in
+  // each solution.
+  std::optional<viscoroll::cli::LongTermContact> roller_long_term;
+  if (p.roller)
+    roller_long_term = std::visit(
+        [&](const auto& roller) {
+          return p.prony ? viscoroll::cli::profile_long_term(roller, *p.prony, p.load)
+                         : viscoroll::cli::profile_long_term(roller, material(p, p.tau.front()),
+                                                             p.load);
+        },
+        *p.roller);
+  // The record after its head.
+  const auto fields = [&](const auto& s, const viscoroll::AlongRoller<double>& along, double speed,
+                          double seconds) {
+    return viscoroll::cli::bem_fields<Record>(
+        s, along, roller_long_term.value_or(viscoroll::cli::hertz_long_term(s)), axial,
+        duty(p, speed), options.tolerance, seconds);
+  };
   if (p.prony)
     return run_sweeps(
         p, p.temperatures, out, scene_at,
@@ -1020,11 +1003,11 @@ int run_bem(const Problem& p, Output& out) {
         [&](double temperature, const auto& scene, const auto& s, double seconds) {
           const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
           const auto along = s.along_roller();
-          out.add(bem_record({{"method", std::string("bem")},
-                              {"temperature", temperature},
-                              {"a_T", a_t},
-                              {"speed", scene.speed}},
-                             s, along, seconds, options.tolerance, axial));
+          out.add(with_fields({{"method", std::string("bem")},
+                               {"temperature", temperature},
+                               {"a_T", a_t},
+                               {"speed", scene.speed}},
+                              fields(s, along, scene.speed, seconds)));
           out.add_profile(std::nan(""), temperature, scene.speed, along);
           note_outcome(out, "bem", temperature_label(p, temperature, scene.speed), s);
         });
@@ -1033,11 +1016,11 @@ int run_bem(const Problem& p, Output& out) {
       [&](double tau) { return viscoroll::BemSolverD(material(p, tau), options); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
         const auto along = s.along_roller();
-        out.add(bem_record({{"method", std::string("bem")},
-                            {"tau", tau},
-                            {"speed", scene.speed},
-                            {"vtau", scene.speed * tau}},
-                           s, along, seconds, options.tolerance, axial));
+        out.add(with_fields({{"method", std::string("bem")},
+                             {"tau", tau},
+                             {"speed", scene.speed},
+                             {"vtau", scene.speed * tau}},
+                            fields(s, along, scene.speed, seconds)));
         out.add_profile(tau, std::nan(""), scene.speed, along);
         note_outcome(out, "bem", label(p, tau, scene.speed), s);
       });

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "engineering.hpp"
+
 namespace viscoroll::cli {
 
 /// The stations of LineSolution::along_roller behind the record's f0_max, f0_max_y and the rows
@@ -41,11 +43,13 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
 /// head (method, the material's keys, speed): the contact's shape up to chi (a0, b0 at y = 0,
 /// both 0 where the contact does not reach y = 0) (with the peak of the
 /// load per unit length along the roller, f0_max at f0_max_y, over
-/// along_roller(line_profile_stations)'s stations: line_f0_peak; as the bem's record), then
-/// `middle` (the peak pressure pmax, pmax_x; a spectrum's active_terms), then the iteration's
-/// fields. `Record` is a sequence of (key, value) fields built from braces.
+/// along_roller(line_profile_stations)'s stations: line_f0_peak; as the bem's record), chi's
+/// engineering_fields for `duty`, then `middle` (the peak pressure pmax, pmax_x; a spectrum's
+/// active_terms), then the iteration's fields. `Record` is a sequence of (key, value) fields
+/// built from braces.
 template <class Record, class Solution>
-Record line_fields(const Solution& s, const Record& middle, int terms, double seconds) {
+Record line_fields(const Solution& s, const Record& middle, const Duty& duty, int terms,
+                   double seconds) {
   const auto [f0_max, f0_max_y] = line_f0_peak(s, line_profile_stations);
   // Where the contact does not reach y = 0 (a tilted roller pressed off the centre) there is no
   // strip at y = 0: a0 = 0 and b0 = 0 (b's series extrapolated there would mean nothing).
@@ -63,6 +67,8 @@ Record line_fields(const Solution& s, const Record& middle, int terms, double se
                         {"d0", s.d_long_term},
                         {"chi", s.chi}};
   out.insert(out.end(), shape.begin(), shape.end());
+  const Record cost = engineering_fields<Record>(s.chi, duty);
+  out.insert(out.end(), cost.begin(), cost.end());
   out.insert(out.end(), middle.begin(), middle.end());
   const Record tail = {
       {"seconds", seconds},     {"converged", s.converged},

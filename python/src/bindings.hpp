@@ -20,6 +20,7 @@
 #include <viscoroll/material/temperature_shift.hpp>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/engineering.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
 
@@ -45,9 +46,9 @@ struct MaterialSpec {
 };
 
 /// A roller: the paper's ellipsoid (c1, c2), a cylinder of `radius` (plane only, c1 = 1/radius),
-/// or a scene file's roller of finite length (`axial`: crowned, logarithmic or table; c1 =
-/// 1/radius), which the line method solves untilted and symmetric on any material
-/// (LineSolver::solve(LineProfileScene); cli::check_scene_for_method).
+/// or a roller of finite length (`axial`: crowned, logarithmic or table, tilted or not; c1 =
+/// 1/radius), which the line and bem methods solve on any material
+/// (LineSolver::solve(LineProfileScene), bem_scene; cli::check_scene_for_method).
 struct RollerSpec {
   bool cylinder = false;
   double c1 = 0, c2 = 0, radius = 0;
@@ -89,16 +90,26 @@ using Value = std::variant<double, long long, bool, std::string, std::vector<std
 /// The command line's JSON fields of one solution, in its order (docs/cli.md, "Output").
 using Record = std::vector<std::pair<std::string, Value>>;
 
-/// What a record says of the material, as the command line: tau and V tau, or a Prony
-/// material's temperature and a_T.
-struct MaterialKeys {
+/// The rolling radius of a roller: its `radius` (a cylinder, a roller of finite length), else
+/// 1/c1 (the ellipsoid; cli::Duty).
+inline double rolling_radius(const RollerSpec& roller) {
+  return roller.radius > 0 ? roller.radius : 1 / roller.c1;
+}
+
+/// What a record says beyond its solution, as the command line: tau and V tau, or a Prony
+/// material's temperature and a_T; the load and the rolling radius of its engineering fields.
+struct RecordKeys {
   bool prony = false;
   double tau = 0, temperature = 0, a_t = 1;
+  double load = 0, radius = 0;
 
-  static MaterialKeys of(const SceneSpec& scene) {
-    if (!scene.material.prony) return {false, scene.material.tau, 0, 1};
-    return {true, 0, scene.temperature, shift_factor_of(scene)};
+  static RecordKeys of(const SceneSpec& scene) {
+    const double load = scene.load, radius = rolling_radius(scene.roller);
+    if (!scene.material.prony) return {false, scene.material.tau, 0, 1, load, radius};
+    return {true, 0, scene.temperature, shift_factor_of(scene), load, radius};
   }
+  /// The load, `speed` and radius of cli::engineering_fields.
+  cli::Duty duty(double speed) const { return {load, speed, radius}; }
   /// The record's first fields: method, then tau, speed, vtau or temperature, a_T, speed.
   Record head(const char* method, double speed) const {
     if (prony)
@@ -193,10 +204,11 @@ struct TimedSolver {
 
 /// One solve of a seeded method (line: SolvedT = LineSolved; bem: BemSolved), timed; `start`
 /// must be a result of the same method and solution type. SolvedT is constructed from
-/// (solution, keys, speed, grid, seconds).
-template <class SolvedT, class Solver, class Scene>
+/// (solution, keys, speed, grid, seconds); `keys` is its RecordKeys (or what it takes in their
+/// place).
+template <class SolvedT, class Solver, class Scene, class Keys>
 SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, const Solved* start,
-                       const MaterialKeys& keys, int grid) {
+                       const Keys& keys, int grid) {
   const typename Solver::Solution* seed = nullptr;
   if (start) {
     const auto* same = dynamic_cast<const SolvedT*>(start);
@@ -227,10 +239,10 @@ std::vector<SolvedPtr> sweep_timed(const Solver& solver, const Scene& at,
 }
 
 /// sweep_timed for a seeded method (line: SolvedT = LineSolved; bem: BemSolved).
-template <class SolvedT, class Solver, class Scene>
+template <class SolvedT, class Solver, class Scene, class Keys>
 std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
-                                    std::span<const double> speeds, const MaterialKeys& keys,
-                                    int grid, const SweepOptions& options) {
+                                    std::span<const double> speeds, const Keys& keys, int grid,
+                                    const SweepOptions& options) {
   return sweep_timed(
       solver, at, speeds,
       [keys, grid](const typename Solver::Solution& s, double speed, double seconds) -> SolvedPtr {

@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -34,6 +35,7 @@
 #include <viscoroll/plane/plane_solver.hpp>
 
 #include "bindings.hpp"
+#include "cli/plane_record.hpp"
 #include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 
@@ -79,24 +81,10 @@ using PlaneSolver = PlaneSolverD;
 template <class Solution>
 class PlaneSolved final : public Solved {
  public:
-  PlaneSolved(Solution s, const MaterialKeys& keys, double speed, double seconds)
+  PlaneSolved(Solution s, const RecordKeys& keys, double speed, double seconds)
       : Solved(Method::plane), s_(std::move(s)) {
-    const auto peak = s_.peak();
-    Record fields = {{"a0", s_.a},
-                     {"b0", s_.b},
-                     {"a_long_term", s_.a_long_term},
-                     {"chi", s_.chi},
-                     {"pmax", peak.pressure},
-                     {"pmax_x", peak.x}};
-    if constexpr (requires { s_.active_terms; }) {
-      fields.emplace_back("active_terms", static_cast<long long>(s_.active_terms));
-      fields.emplace_back("spectrum_error", s_.spectrum_error);
-    }
-    record_ = joined(joined(keys.head("plane", speed), fields),
-                     {{"seconds", seconds},
-                      {"converged", s_.converged},
-                      {"iterations", static_cast<long long>(s_.iterations)},
-                      {"residual", s_.residual}});
+    record_ =
+        joined(keys.head("plane", speed), cli::plane_fields<Record>(s_, keys.duty(speed), seconds));
   }
   double pressure(double x, double) const override { return s_.pressure(x); }
   double a(double) const override { return s_.a; }
@@ -120,7 +108,7 @@ SolvedPtr solve_plane_with(const Solver& solver, const SceneSpec& scene, double 
   auto s = solver.solve(at);
   const double seconds = seconds_since(t0);
   return std::make_shared<PlaneSolved<typename Solver::Solution>>(
-      std::move(s), MaterialKeys::of(scene), speed, seconds);
+      std::move(s), RecordKeys::of(scene), speed, seconds);
 }
 
 template <class Solver>
@@ -129,7 +117,7 @@ std::vector<SolvedPtr> sweep_plane_with(const Solver& solver, const SceneSpec& s
                                         const SweepOptions& options) {
   const PlaneScene<double> at = plane_scene(scene, 0.0);
   for (const double v : speeds) plane_scene(scene, v);
-  const auto keys = MaterialKeys::of(scene);
+  const auto keys = RecordKeys::of(scene);
   using Solution = typename Solver::Solution;
   return sweep_timed(
       solver, at, speeds,
@@ -183,6 +171,9 @@ struct Roller {
 };
 struct EllipsoidRoller : Roller {};
 struct CylinderRoller : Roller {};
+struct CrownedRoller : Roller {};
+struct LogarithmicRoller : Roller {};
+struct TableRoller : Roller {};
 
 /// The result of one solve, shared with Python.
 struct Result {
@@ -240,11 +231,6 @@ cli::Method to_cli(Method m) {
 int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid,
                      bool fast = false) {
   cli::Scene s;
-  if (scene.roller.axial && method == Method::bem)
-    throw std::invalid_argument(
-        scene.source + ": roller.profile = \"" + cli::roller_profile_name(*scene.roller.axial) +
-        "\": a roller of finite length is solved here by the line method; the bem method takes "
-        "it from the command line (viscoroll-solve --method bem, docs/cli.md)");
   if (scene.material.prony) s.material = cli::PronyModel{};
   if (scene.roller.axial)
     s.roller = *scene.roller.axial;
@@ -376,6 +362,61 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
   out.description = in.description;
   out.source = source;
   return out;
+}
+
+/// A Python value as the scene reader's JSON: a bool, a number, a string, or a sequence of them
+/// (a table's y, h); anything else as its repr (the reader then names the key and its type).
+nlohmann::json to_json(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
+      py::hasattr(value, "__float__"))
+    return value.cast<double>();
+  if (py::isinstance<py::sequence>(value) || py::isinstance<py::array>(value)) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto item : py::iter(value)) out.push_back(to_json(item));
+    return out;
+  }
+  return py::repr(value).cast<std::string>();
+}
+
+/// A roller of finite length, `profile` ("crowned", "logarithmic", "table") with `keys` (a scene
+/// file's keys of that profile, docs/rollers.md; a None value is a key left out), read by the
+/// scene file's reader and validated by the library as Scene.from_json's: the same ranges and
+/// messages, naming the key ("viscoroll: radius = -1 is outside the valid range radius > 0").
+RollerSpec axial_roller(const std::string& profile, const py::dict& keys) {
+  namespace sd = cli::scene_detail;
+  if (profile != "crowned" && profile != "logarithmic" && profile != "table")
+    throw std::invalid_argument("viscoroll: profile = '" + profile +
+                                "' is not one of 'crowned', 'logarithmic', 'table' (the "
+                                "ellipsoid and the cylinder are Ellipsoid(c1, c2) and "
+                                "Cylinder(radius))");
+  nlohmann::json object = nlohmann::json::object();
+  for (const auto& [key, value] : keys)
+    if (!value.is_none()) object[py::str(key).cast<std::string>()] = to_json(value);
+  const auto& readers = sd::roller_readers();
+  const auto reader = std::find_if(readers.begin(), readers.end(),
+                                   [&](const auto& r) { return r.profile == profile; });
+  cli::RollerProfile roller;
+  try {
+    roller = reader->read(
+        sd::ObjectReader("viscoroll", object, "", reader->keys, "profile '" + profile + "'"));
+    cli::visit_axial_profile(roller, [](const auto&, double) {});
+  } catch (const std::invalid_argument& e) {
+    const std::string message = reader_message(e.what());
+    throw std::invalid_argument(message.starts_with("viscoroll: ") ? message
+                                                                   : "viscoroll: " + message);
+  }
+  const double radius = std::visit(
+      [](const auto& r) -> double {
+        if constexpr (requires { r.radius; })
+          return r.radius;
+        else
+          return 0.0;
+      },
+      roller);
+  return {false, 1 / radius, 0.0, radius,
+          std::make_shared<const cli::RollerProfile>(std::move(roller))};
 }
 
 py::object to_python(const Value& value) {
@@ -557,10 +598,21 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"f0_max", "Largest load per unit length along the roller, N/m (line, bem)."},
       {"f0_max_y", "Where the load per unit length is largest, m (as f0_max)."},
       {"d", "Penetration (line, bem)."},
-      {"a_long_term", "a0 of the static (V tau = 0) long-term contact; bem: of its Hertz ellipse."},
-      {"l0", "l of the static long-term contact (line, bem)."},
-      {"d0", "d of the static long-term contact (line, bem)."},
-      {"chi", "Rolling-friction coefficient (Eq. 51/54)."},
+      {"a_long_term",
+       "Half width at its centre of the static (V = 0) contact under the long-term modulus: "
+       "plane, Hertz's strip; line, the line theory's; bem, Hertz's ellipse (an Ellipsoid) or "
+       "the line theory's (a roller of finite length); nan where the line theory has none."},
+      {"l0", "Half length of that static long-term contact (line, bem)."},
+      {"d0", "Penetration of that static long-term contact (line, bem)."},
+      {"chi",
+       "Rolling-friction coefficient chi = F/W (Eq. 51/54): the rolling-resistance force over "
+       "the load."},
+      {"rolling_resistance",
+       "F = chi W, the rolling-resistance force (N with SI inputs; plane: per unit length, N/m)."},
+      {"power_loss", "P = chi W V, the power the rolling resistance costs (W; plane: W/m)."},
+      {"energy_per_revolution",
+       "E = chi W 2 pi R, the energy lost per revolution of the roller (J; plane: J/m); R the "
+       "roller's radius (an Ellipsoid: 1/c1)."},
       {"pmax", "Peak pressure on y = 0 (not line with a Prony material)."},
       {"pmax_x", "Where the peak pressure on y = 0 is (not line with a Prony material)."},
       {"seconds", "Run time of this solve (s)."},
@@ -604,14 +656,21 @@ std::string material_repr(const MaterialSpec& m) {
          ", f=" + shortest(m.f) + ", tau=" + shortest(m.tau) + ")";
 }
 
-/// A scene file's roller of finite length as its keys: Roller(profile='crowned', radius=...).
+/// The Python class of a roller of finite length ("Crowned").
+std::string axial_class(const cli::RollerProfile& roller) {
+  std::string name = cli::roller_profile_name(roller);
+  name[0] = static_cast<char>(name[0] - 'a' + 'A');
+  return name;
+}
+
+/// A roller of finite length as its keys: Crowned(radius=..., flat_length=..., ...).
 std::string axial_repr(const cli::RollerProfile& roller) {
-  std::string out = "Roller(profile='" + cli::roller_profile_name(roller) + "'";
+  std::string out = axial_class(roller) + "(";
   const auto key = [&](const char* name, double x) {
-    out += std::string(", ") + name + "=" + shortest(x);
+    out += std::string(out.ends_with("(") ? "" : ", ") + name + "=" + shortest(x);
   };
   const auto list = [&](const char* name, const std::vector<double>& xs) {
-    out += std::string(", ") + name + "=[";
+    out += std::string(out.ends_with("(") ? "" : ", ") + name + "=[";
     for (std::size_t i = 0; i < xs.size(); ++i) out += (i ? ", " : "") + shortest(xs[i]);
     out += "]";
   };
@@ -663,7 +722,12 @@ double compliance(const MaterialSpec& m, bool long_term) {
 }
 
 py::object roller_object(const RollerSpec& r) {
-  if (r.axial) return py::cast(Roller{r});  // a scene file's roller of finite length
+  if (r.axial) {
+    if (std::holds_alternative<cli::CrownedProfile>(*r.axial)) return py::cast(CrownedRoller{{r}});
+    if (std::holds_alternative<cli::LogarithmicProfile>(*r.axial))
+      return py::cast(LogarithmicRoller{{r}});
+    return py::cast(TableRoller{{r}});
+  }
   if (r.cylinder) return py::cast(CylinderRoller{{r}});
   return py::cast(EllipsoidRoller{{r}});
 }
@@ -678,9 +742,11 @@ Parameters
 scene : Scene
     Material, roller, load (line, bem: total load; plane: load per unit length) and speeds.
 method : {"line", "plane", "bem"}, optional
-    "line": the paper's 3-D line-contact theory (an Ellipsoid with c2 < 8 e^-3 c1);
+    "line": the paper's 3-D line-contact theory (an Ellipsoid with c2 < 8 e^-3 c1, or a
+    roller of finite length: Crowned, Logarithmic, Table);
     "plane": Hunter's plane problem of a cylinder (an Ellipsoid's c2 is ignored);
-    "bem": the exact 3-D boundary-element reference. Default: the scene's method (a scene
+    "bem": the exact 3-D boundary-element reference (an Ellipsoid or a roller of finite
+    length, tilted or not). Default: the scene's method (a scene
     file's "method"), else "plane" for a Cylinder and "line" for an Ellipsoid.
 grid : int, optional
     Discretisation, as viscoroll-solve --grid: line, Chebyshev terms of ln a(y), 1..64
@@ -909,9 +975,16 @@ PYBIND11_MODULE(_viscoroll, m) {
           "The shift law, or None.");
 
   // Rollers.
-  py::class_<vp::Roller>(m, "Roller",
-                         "Base class of the roller profiles (Ellipsoid, Cylinder); itself a scene "
-                         "file's roller of finite length (crowned, logarithmic, table).")
+  py::class_<vp::Roller>(
+      m, "Roller",
+      "Roller(profile, **keys)\n\n"
+      "Base class of the roller profiles (Ellipsoid, Cylinder, Crowned, Logarithmic, Table).\n"
+      "Roller(profile='crowned', radius=..., ...) builds a roller of finite length from a scene\n"
+      "file's roller keys (docs/rollers.md), as Crowned(...), Logarithmic(...), Table(...) do.")
+      .def(py::init([](const std::string& profile, const py::kwargs& keys) {
+             return vp::Roller{axial_roller(profile, keys)};
+           }),
+           py::arg("profile"))
       .def("__repr__", [](const vp::Roller& r) { return roller_repr(r.spec); });
   py::class_<EllipsoidRoller, vp::Roller>(
       m, "Ellipsoid",
@@ -941,12 +1014,81 @@ PYBIND11_MODULE(_viscoroll, m) {
       .def_property_readonly(
           "c1", [](const vp::Roller& r) { return r.spec.c1; }, "1/radius.");
 
+  // Rollers of finite length: a scene file's crowned, logarithmic and table rollers
+  // (docs/rollers.md), read by its reader (axial_roller).
+  const auto keys = [](std::initializer_list<std::pair<const char*, py::object>> items) {
+    py::dict out;
+    for (const auto& [key, value] : items) out[key] = value;
+    return out;
+  };
+  const auto axial_properties = [](auto& cls) {
+    cls.def_property_readonly(
+           "radius", [](const vp::Roller& r) { return r.spec.radius; }, "Radius R (c1 = 1/R).")
+        .def_property_readonly(
+            "tilt", [](const vp::Roller& r) { return viscoroll::cli::roller_tilt(*r.spec.axial); },
+            "Misalignment (rad), 0 when aligned.");
+  };
+  py::class_<CrownedRoller, vp::Roller> crowned(
+      m, "Crowned",
+      "Crowned(radius, flat_length, crown_radius, length=None, tilt=None)\n\n"
+      "A cylinder of radius > 0 with a flat part of flat_length >= 0 and circular crowns of\n"
+      "crown_radius > 0 beyond it, cut at length > flat_length (None: at the crown circle's\n"
+      "end), misaligned by |tilt| < 0.1 rad: a scene file's \"crowned\" roller\n"
+      "(docs/rollers.md; the line and bem methods). Lengths in the scene's units (m with SI).\n"
+      "Raises ValueError naming a parameter out of range.");
+  crowned.def(py::init([keys](const py::object& radius, const py::object& flat_length,
+                              const py::object& crown_radius, const py::object& length,
+                              const py::object& tilt) {
+                return CrownedRoller{{axial_roller("crowned", keys({{"radius", radius},
+                                                                    {"flat_length", flat_length},
+                                                                    {"crown_radius", crown_radius},
+                                                                    {"length", length},
+                                                                    {"tilt", tilt}}))}};
+              }),
+              py::arg("radius"), py::arg("flat_length"), py::arg("crown_radius"),
+              py::arg("length") = py::none(), py::arg("tilt") = py::none());
+  axial_properties(crowned);
+  py::class_<LogarithmicRoller, vp::Roller> logarithmic(
+      m, "Logarithmic",
+      "Logarithmic(radius, length, scale, end_drop=None, tilt=None)\n\n"
+      "A logarithmic crown h = -A ln(1 - k (2y/L)^2) on a roller of radius > 0 and length L > 0,\n"
+      "scale A > 0, end drop > 0 (None: Lundberg's profile), misaligned by |tilt| < 0.1 rad: a\n"
+      "scene file's \"logarithmic\" roller (docs/rollers.md). Raises ValueError naming a\n"
+      "parameter out of range.");
+  logarithmic.def(
+      py::init([keys](const py::object& radius, const py::object& length, const py::object& scale,
+                      const py::object& end_drop, const py::object& tilt) {
+        return LogarithmicRoller{{axial_roller("logarithmic", keys({{"radius", radius},
+                                                                    {"length", length},
+                                                                    {"scale", scale},
+                                                                    {"end_drop", end_drop},
+                                                                    {"tilt", tilt}}))}};
+      }),
+      py::arg("radius"), py::arg("length"), py::arg("scale"), py::arg("end_drop") = py::none(),
+      py::arg("tilt") = py::none());
+  axial_properties(logarithmic);
+  py::class_<TableRoller, vp::Roller> table(
+      m, "Table",
+      "Table(radius, y, h, tilt=None)\n\n"
+      "A roller of radius > 0 whose drop h(y) is tabulated at y (at least 4 points, strictly\n"
+      "increasing, y = 0 strictly inside; one h per y) and interpolated by a modified Akima\n"
+      "spline, misaligned by |tilt| < 0.1 rad: a scene file's \"table\" roller\n"
+      "(docs/rollers.md). Raises ValueError naming a parameter out of range.");
+  table.def(py::init([keys](const py::object& radius, const py::object& y, const py::object& h,
+                            const py::object& tilt) {
+              return TableRoller{{axial_roller(
+                  "table", keys({{"radius", radius}, {"y", y}, {"h", h}, {"tilt", tilt}}))}};
+            }),
+            py::arg("radius"), py::arg("y"), py::arg("h"), py::arg("tilt") = py::none());
+  axial_properties(table);
+
   // Scene.
   py::class_<SceneSpec>(
       m, "Scene",
       "Scene(material, roller, load, speeds=None, temperature=None)\n\n"
-      "One problem: a material (StandardLinearSolid, Elastic or Prony), a roller (Ellipsoid or\n"
-      "Cylinder), the load (> 0; total for line and bem, per unit length for plane) and\n"
+      "One problem: a material (StandardLinearSolid, Elastic or Prony), a roller (Ellipsoid,\n"
+      "Cylinder, Crowned, Logarithmic or Table), the load (> 0; total for line and bem, per unit "
+      "length for plane) and\n"
       "optionally the speeds (each >= 0) for sweep() and solve(). Any consistent units.\n"
       "temperature (degrees Celsius): a Prony material with a shift law is solved there (every\n"
       "time of its spectrum times a_T); default the law's t_ref.\n"

@@ -1,13 +1,19 @@
 // viscoroll's Python module: the boundary-element solver behind solve_bem and sweep_bem, over the
-// standard linear solid (BemSolverD) or a Prony series (BemSolver over PronyRelaxation). The fields
-// are those of viscoroll-solve --method bem (examples/viscoroll_solve.cpp).
+// standard linear solid (BemSolverD) or a Prony series (BemSolver over PronyRelaxation), for the
+// ellipsoid or a roller of finite length (tilted or not; its scene from bem_scene, as the command
+// line's). The fields are those of viscoroll-solve --method bem (cli/bem_record.hpp).
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
+#include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
+#include <viscoroll/roller/profile.hpp>
 
 #include "bindings.hpp"
+#include "cli/bem_record.hpp"
+#include "cli/roller_profile.hpp"
 
 namespace viscoroll::python {
 namespace {
@@ -17,40 +23,24 @@ using SpectrumSolver = BemSolver<double, PronyRelaxation<double>>;
 using Solution = BemSolution<double>;
 static_assert(std::is_same_v<SpectrumSolver::Solution, Solution>);
 
+/// What a bem record takes besides its solution: the record's keys, and the static long-term
+/// contact of a roller of finite length (none for the ellipsoid: Hertz's, from the solution).
+struct BemKeys {
+  RecordKeys record;
+  std::optional<cli::LongTermContact> long_term;
+};
+
 class BemSolved final : public Solved {
  public:
-  BemSolved(Solution s, const MaterialKeys& keys, double speed, int grid, double seconds)
+  /// `grid`: the solver's one grid (Python solves the bem on one grid: tolerance 0); the record's
+  /// grid is the solution's, the same.
+  BemSolved(Solution s, const BemKeys& keys, double speed, [[maybe_unused]] int grid,
+            double seconds)
       : Solved(Method::bem), s_(std::move(s)) {
-    std::size_t peak = 0;
-    for (std::size_t q = 0; q < s_.pressure.size(); ++q)
-      if (s_.pressure[q] > s_.pressure[peak]) peak = q;
-    const int peak_i = static_cast<int>(peak % static_cast<std::size_t>(s_.grid.nx));
-    const double pmax = s_.pressure.empty() ? 0.0 : s_.pressure[peak];
-    const auto along = s_.along_roller();
-    record_ = joined(keys.head("bem", speed),
-                     {{"a0", s_.a0},
-                      {"b0", s_.b0},
-                      {"l", s_.l},
-                      {"y_minus", -s_.l},
-                      {"y_plus", s_.l},
-                      {"f0_max", along.f0_max},
-                      {"f0_max_y", along.f0_max_y},
-                      {"d", s_.d},
-                      {"a_long_term", s_.long_term.a},
-                      {"l0", s_.long_term.b},
-                      {"d0", s_.long_term.d},
-                      {"chi", s_.chi},
-                      {"pmax", pmax},
-                      {"pmax_x", s_.grid.x(peak_i)},
-                      {"seconds", seconds},
-                      {"converged", s_.converged},
-                      {"iterations", static_cast<long long>(s_.iterations)},
-                      {"gmres_iterations", static_cast<long long>(s_.krylov_iterations)},
-                      {"residual", s_.residual},
-                      {"grid", static_cast<long long>(grid)},
-                      {"cells", static_cast<long long>(s_.grid.size())},
-                      {"reason", s_.reason},
-                      {"warnings", s_.warnings}});
+    record_ = joined(keys.record.head("bem", speed),
+                     cli::bem_fields<Record>(
+                         s_, s_.along_roller(), keys.long_term.value_or(cli::hertz_long_term(s_)),
+                         keys.long_term.has_value(), keys.record.duty(speed), 0.0, seconds));
   }
 
   const Solution& solution() const { return s_; }
@@ -77,6 +67,12 @@ class BemSolved final : public Solved {
   Solution s_;
 };
 
+/// The scene's standard linear solid (an elastic material: f = tau = 0).
+StandardLinearSolid<double> material_of(const SceneSpec& scene) {
+  const auto& m = scene.material;
+  return {m.mu_d, m.nu, m.f, m.tau};
+}
+
 BemOptions options_for(int grid) {
   BemOptions options;
   options.grid = grid;
@@ -84,19 +80,51 @@ BemOptions options_for(int grid) {
 }
 
 Solver make_solver(const SceneSpec& scene, int grid) {
-  const auto& m = scene.material;
-  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options_for(grid));
+  return Solver(material_of(scene), options_for(grid));
 }
 
 SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int grid) {
   return SpectrumSolver(prony_at(scene), options_for(grid));
 }
 
-BemScene<double> bem_scene(const SceneSpec& scene, double speed) {
-  BemScene<double> s{
-      .c1 = scene.roller.c1, .c2 = scene.roller.c2, .load = scene.load, .speed = speed};
+/// f(profile) with the library profile of the scene's roller of finite length in its tilt.
+template <class F>
+auto with_profile(const SceneSpec& scene, F f) {
+  return cli::visit_axial_profile(*scene.roller.axial, [&](auto profile, double tilt) {
+    return f(Tilted(std::move(profile), tilt));
+  });
+}
+
+/// The scene at `speed`: the ellipsoid's, or a roller of finite length's by bem_scene (its grid
+/// sized by the long-term compliance, which the temperature does not change: the command line's
+/// scene, from the reference material).
+BemScene<double> bem_scene_at(const SceneSpec& scene, double speed) {
+  if (!scene.roller.axial) {
+    BemScene<double> s{
+        .c1 = scene.roller.c1, .c2 = scene.roller.c2, .load = scene.load, .speed = speed};
+    s.validate();
+    return s;
+  }
+  BemScene<double> s = with_profile(scene, [&](const auto& roller) {
+    return scene.material.prony
+               ? bem_scene(roller, scene.material.prony->reference, scene.load, speed)
+               : bem_scene(roller, material_of(scene), scene.load, speed);
+  });
   s.validate();
   return s;
+}
+
+/// The record's keys, with the line theory's static long-term contact of a roller of finite
+/// length (cli::profile_long_term).
+BemKeys keys_of(const SceneSpec& scene) {
+  BemKeys keys{RecordKeys::of(scene), std::nullopt};
+  if (scene.roller.axial)
+    keys.long_term = with_profile(scene, [&](const auto& roller) {
+      return scene.material.prony
+                 ? cli::profile_long_term(roller, scene.material.prony->reference, scene.load)
+                 : cli::profile_long_term(roller, material_of(scene), scene.load);
+    });
+  return keys;
 }
 
 }  // namespace
@@ -116,23 +144,23 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 }
 
 SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start) {
-  const auto keys = MaterialKeys::of(scene);
+  const BemScene<double> at = bem_scene_at(scene, speed);
+  const BemKeys keys = keys_of(scene);
   if (scene.material.prony)
-    return solve_seeded<BemSolved>(make_spectrum_solver(scene, grid), bem_scene(scene, speed),
-                                   Method::bem, start, keys, grid);
-  return solve_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, speed), Method::bem,
-                                 start, keys, grid);
+    return solve_seeded<BemSolved>(make_spectrum_solver(scene, grid), at, Method::bem, start, keys,
+                                   grid);
+  return solve_seeded<BemSolved>(make_solver(scene, grid), at, Method::bem, start, keys, grid);
 }
 
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
                                  const SweepOptions& options) {
-  for (const double v : speeds) bem_scene(scene, v);  // every speed checked before any work
-  const auto keys = MaterialKeys::of(scene);
+  for (const double v : speeds) bem_scene_at(scene, v);  // every speed checked before any work
+  const BemScene<double> at = bem_scene_at(scene, 0.0);
+  const BemKeys keys = keys_of(scene);
   if (scene.material.prony)
-    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid), bem_scene(scene, 0.0), speeds,
-                                   keys, grid, options);
-  return sweep_seeded<BemSolved>(make_solver(scene, grid), bem_scene(scene, 0.0), speeds, keys,
-                                 grid, options);
+    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid), at, speeds, keys, grid,
+                                   options);
+  return sweep_seeded<BemSolved>(make_solver(scene, grid), at, speeds, keys, grid, options);
 }
 
 }  // namespace viscoroll::python

@@ -23,12 +23,12 @@ template <class Solver>
 class LineSolved final : public Solved {
  public:
   using Solution = typename Solver::Solution;
-  LineSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
+  LineSolved(Solution s, const RecordKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
     const auto peak = s_.strip(0.0).peak();
     record_ = joined(keys.head("line", speed),
                      cli::line_fields<Record>(s_, {{"pmax", peak.pressure}, {"pmax_x", peak.x}},
-                                              terms, seconds));
+                                              keys.duty(speed), terms, seconds));
   }
 
   const Solution& solution() const { return s_; }
@@ -46,14 +46,14 @@ class LineSolved final : public Solved {
 class LineSpectrumSolved final : public Solved {
  public:
   using Solution = SpectrumSolver::Solution;
-  LineSpectrumSolved(Solution s, const MaterialKeys& keys, double speed, int terms, double seconds)
+  LineSpectrumSolved(Solution s, const RecordKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
     record_ =
         joined(keys.head("line", speed),
                cli::line_fields<Record>(s_,
                                         {{"active_terms", static_cast<long long>(s_.active_terms)},
                                          {"spectrum_error", s_.spectrum_error}},
-                                        terms, seconds));
+                                        keys.duty(speed), terms, seconds));
   }
 
   const Solution& solution() const { return s_; }
@@ -116,7 +116,7 @@ auto with_profile(const SceneSpec& scene, F f) {
 
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
                      const Solved* start) {
-  const auto keys = MaterialKeys::of(scene);
+  const auto keys = RecordKeys::of(scene);
   // The scene `scene_at` builds at `speed`, by the material's solver (the setting's).
   const auto solve = [&](auto scene_at) {
     if (scene.material.prony)
@@ -138,7 +138,7 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   bool fast, const SweepOptions& options) {
-  const auto keys = MaterialKeys::of(scene);
+  const auto keys = RecordKeys::of(scene);
   // The scenes `scene_at` builds, every speed checked before any work, by the material's solver
   // (the setting's).
   const auto sweep = [&](auto scene_at) {

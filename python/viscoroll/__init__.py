@@ -10,7 +10,10 @@ Materials
     Prony(g_inf=, nu=, terms=[(g, tau), ...], shift=None) with WLF(c1=, c2=, t_ref=) or
     Arrhenius(activation_energy=, t_ref=)
 Rollers
-    Ellipsoid(c1=, c2=), Cylinder(radius=) (plane only)
+    Ellipsoid(c1=, c2=), Cylinder(radius=) (plane only), and the rollers of finite length of a
+    scene file (line, bem): Crowned(radius=, flat_length=, crown_radius=, length=None,
+    tilt=None), Logarithmic(radius=, length=, scale=, end_drop=None, tilt=None),
+    Table(radius=, y=, h=, tilt=None), or Roller(profile="crowned", ...) with a scene file's keys
 Scenes
     Scene(material=, roller=, load=, speeds=None, temperature=None), Scene.from_json(path,
     temperature=None) (a scene file of the command line viscoroll-solve, docs/cli.md)
@@ -21,9 +24,11 @@ Solving
     (setting="fast": the line method's fast setting, about 1 ms a solve, within 1% on the
     paper's scene)
 Results
-    Result: the command line's output fields as attributes (a0, b0, l, d, chi, pmax, pmax_x,
-    converged, root, iterations, residual, reason, warnings, ...), as_dict(), and
-    pressure(x, y), a(y), b(y), f0(y) on NumPy arrays.
+    Result: the command line's output fields as attributes (a0, b0, l, d, chi,
+    rolling_resistance, power_loss, energy_per_revolution, pmax, pmax_x, converged, root,
+    iterations, residual, reason, warnings, ...), as_dict(), and pressure(x, y), a(y), b(y),
+    f0(y) on NumPy arrays. chi is the rolling-resistance force over the load: F = chi W is
+    rolling_resistance, P = chi W V power_loss.
 
 Invalid input raises ValueError with the library's message naming the parameter; a solve that
 does not converge is returned with converged == False and a reason. The frame moves with the
@@ -44,13 +49,18 @@ Example
 Documentation: docs/python.md of the repository.
 """
 
-from . import _viscoroll
-from ._viscoroll import (
+from . import _build
+_build.check_interpreter()
+
+from . import _viscoroll  # noqa: E402 (after the interpreter's check)
+from ._viscoroll import (  # noqa: E402
     WLF,
     Arrhenius,
+    Crowned,
     Cylinder,
     Elastic,
     Ellipsoid,
+    Logarithmic,
     Material,
     Prony,
     Result,
@@ -58,6 +68,7 @@ from ._viscoroll import (
     Scene,
     Shift,
     StandardLinearSolid,
+    Table,
     __version__,
 )
 
@@ -82,9 +93,11 @@ sweep.__doc__ = _doc(_viscoroll.sweep)
 
 __all__ = [
     "Arrhenius",
+    "Crowned",
     "Cylinder",
     "Elastic",
     "Ellipsoid",
+    "Logarithmic",
     "Material",
     "Prony",
     "Result",
@@ -92,6 +105,7 @@ __all__ = [
     "Scene",
     "Shift",
     "StandardLinearSolid",
+    "Table",
     "WLF",
     "__version__",
     "solve",

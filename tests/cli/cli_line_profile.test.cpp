@@ -214,7 +214,7 @@ TEST_CASE("cli line profile: a contact that does not reach y = 0 has a0 = b0 = 0
   };
   const auto a0_b0 = [](const viscoroll::LineSolverD::Solution& s) {
     std::map<std::string, double> numbers;
-    for (const Field& f : cli::line_fields<std::vector<Field>>(s, {}, 4, 0.0))
+    for (const Field& f : cli::line_fields<std::vector<Field>>(s, {}, cli::Duty{}, 4, 0.0))
       if (const double* x = std::get_if<double>(&f.value)) numbers[f.key] = *x;
     return std::pair{numbers.at("a0"), numbers.at("b0")};
   };

@@ -87,9 +87,9 @@ TEST_CASE("cli: --format table prints a header and a row per speed", "[cli][scen
     std::string scene, method, header;
   };
   const std::vector<Case> cases = {
-      {"rubber_roller.json", "line", "tau speed Vtau/a_lt a0 b0 l d chi converged"},
-      {"rubber_ball.json", "bem", "tau speed Vtau/a_lt a0 b0 l d chi converged"},
-      {"polyamide_cylinder.json", "plane", "tau speed Vtau/a_lt a0 b0 chi converged"},
+      {"rubber_roller.json", "line", "tau speed Vtau/a_lt a0 b0 l d chi F_N P_W converged"},
+      {"rubber_ball.json", "bem", "tau speed Vtau/a_lt a0 b0 l d chi F_N P_W converged"},
+      {"polyamide_cylinder.json", "plane", "tau speed Vtau/a_lt a0 b0 chi F_N/m P_W/m converged"},
   };
   for (const auto& c : cases) {
     const Run json = run({"--scene", (scenes_dir() / c.scene).string(), "--method", c.method});
@@ -243,15 +243,15 @@ TEST_CASE("cli: a result that did not converge shows no numbers in the table and
   REQUIRE(!values[0]["converged"].get<bool>());
   CHECK(values[0]["a0"].is_number());  // JSON keeps its fields, with the reason
   CHECK(!values[0]["reason"].get<std::string>().empty());
-  // The table row: tau, speed, Vtau/a_lt, then a0 b0 l d chi as "-", then "no".
+  // The table row: tau, speed, Vtau/a_lt, then a0 b0 l d chi F_N P_W as "-", then "no".
   const auto rows = lines_of(table.out);
   REQUIRE(rows.size() == 2);
   std::istringstream cells(rows[1]);
   std::vector<std::string> row;
   for (std::string word; cells >> word;) row.push_back(word);
-  REQUIRE(row.size() == 9);
-  for (std::size_t k = 3; k < 8; ++k) CHECK(row[k] == "-");
-  CHECK(row[8] == "no");
+  REQUIRE(row.size() == 11);
+  for (std::size_t k = 3; k < 10; ++k) CHECK(row[k] == "-");
+  CHECK(row[10] == "no");
   // The CSV row: empty solution cells, the speed and the diagnostics kept.
   std::istringstream file(slurp(csv));
   std::string header, line;
@@ -263,7 +263,8 @@ TEST_CASE("cli: a result that did not converge shows no numbers in the table and
   for (std::size_t k = 0; k < keys.size(); ++k) {
     INFO(keys[k] << " = '" << fields[k] << "'");
     if (keys[k] == "a0" || keys[k] == "b0" || keys[k] == "l" || keys[k] == "d" ||
-        keys[k] == "chi" || keys[k] == "pmax")
+        keys[k] == "chi" || keys[k] == "rolling_resistance" || keys[k] == "power_loss" ||
+        keys[k] == "energy_per_revolution" || keys[k] == "pmax")
       CHECK(fields[k].empty());
     if (keys[k] == "speed" || keys[k] == "iterations" || keys[k] == "a_long_term")
       CHECK(!fields[k].empty());

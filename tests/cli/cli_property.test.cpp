@@ -3,7 +3,8 @@
 // range), so that their products overflow and underflow, run through the command line with a
 // time limit per case. Every case must end in one of
 //   - exit 0: strict JSON lines (nlohmann's parser, which rejects inf and nan), each converged,
-//     every number finite but vtau (null where V tau overflows, docs/cli.md), a0 > 0 and, for
+//     every number finite but vtau, f0_max, F, P and E (null where a product of the inputs
+//     overflows, docs/cli.md), a0 > 0 and, for
 //     line and bem, l > 0 and d > 0;
 //   - exit 1: strict JSON lines whose converged ones pass the same checks, and a message on
 //     stderr (a solve that did not converge);
@@ -108,8 +109,11 @@ std::string converged_defect(const nlohmann::json& line, const std::string& meth
   // The parser has rejected inf and nan already (and a literal beyond a double): a number that
   // was not finite can only be null here.
   for (const auto& [key, value] : line.items()) {
-    // null where speed * tau, resp. the load per unit length, overflows (docs/cli.md)
-    if (key == "vtau" || key == "f0_max" || key == "f0_max_y") continue;
+    // null where speed * tau, resp. the load per unit length, resp. chi times the load (and the
+    // speed or 2 pi R) overflows (docs/cli.md)
+    if (key == "vtau" || key == "f0_max" || key == "f0_max_y" || key == "rolling_resistance" ||
+        key == "power_loss" || key == "energy_per_revolution")
+      continue;
     if (value.is_null()) return "converged with " + key + " null";
   }
   std::vector<const char*> sizes = {"a0"};

@@ -4,6 +4,7 @@
 // clang-format off
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <type_traits>
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/material/generalized_maxwell.hpp>
@@ -13,12 +14,19 @@
 namespace test_readme_example {
 
 TEST_CASE("readme: the example solves its scene", "[needs][line]") {
-  // mu_D = 1 MPa, nu = 0.5, f = 9, tau = 10 ms; C1 = 1/R = 100/m, C2/C1 of a 5:1 contact; 10 N at 1 m/s
+  // mu_D = 1 MPa, nu = 0.5, f = 9, tau = 10 ms; C1 = 1/R = 100/m, C2/C1 of a 5:1 contact; 10 N at 0.5 m/s
   const viscoroll::LineSolverD solver(viscoroll::StandardLinearSolid<double>(1e6, 0.5, 9.0, 0.01));
-  const auto s = solver.solve({.c1 = 100.0, .c2 = 7.98, .load = 10.0, .speed = 1.0});
+  const double load = 10.0, speed = 0.5;
+  const auto s = solver.solve({.c1 = 100.0, .c2 = 7.98, .load = load, .speed = speed});
+  std::printf("chi = %.4g, F = chi W = %.4g N, P = F V = %.4g W\n", s.chi, s.chi * load,
+              s.chi * load * speed);  // chi = 0.1525, F = chi W = 1.525 N, P = F V = 0.7624 W
   CHECK(s.converged);
+  CHECK(s.root);
   CHECK(s.l() > s.a(0.0));
-  CHECK(s.chi > 0);
+  // The printed numbers, to their 4 digits (half a unit of the 4th: 5e-4 relatively).
+  CHECK(s.chi == Approx(0.1525).epsilon(5e-4));
+  CHECK(s.chi * load == Approx(1.525).epsilon(5e-4));
+  CHECK(s.chi * load * speed == Approx(0.7624).epsilon(5e-4));
 }
 
 TEST_CASE("readme: the solver family's declarations", "[needs][bem]") {

@@ -23,6 +23,9 @@ CASES = [
     ("rubber_ball.json", None, None, None),
     ("crowned_roller_line.json", None, None, None),  # a roller of finite length, line method
     ("crowned_roller_prony_line.json", None, None, None),  # the same roller on a prony spectrum
+    ("crowned_roller_line.json", "bem", 8, [0, 2]),  # a roller of finite length, bem method
+    ("crowned_roller_prony_line.json", "bem", 8, [1]),
+    ("press_roll.json", None, None, None),
 ]
 
 TOLERANCE = 1e-12
@@ -160,11 +163,11 @@ def test_scene_from_json_reads_what_the_command_line_reads(scenes_dir):
     cylinder = vr.Scene.from_json(str(scenes_dir / "polyamide_cylinder.json"))
     assert isinstance(cylinder.roller, vr.Cylinder) and cylinder.method == "plane"
     crowned = vr.Scene.from_json(scenes_dir / "crowned_roller_line.json")
-    assert type(crowned.roller) is vr.Roller and crowned.method == "line"
-    assert repr(crowned.roller) == ("Roller(profile='crowned', radius=0.05, flat_length=0.05, "
-                                    "crown_radius=1, length=0.16)")
-    with pytest.raises(ValueError, match=r'roller.profile = "crowned": a roller of finite length'):
-        vr.solve(crowned, method="bem", speed=1.0)
+    assert type(crowned.roller) is vr.Crowned and crowned.method == "line"
+    assert repr(crowned.roller) == ("Crowned(radius=0.05, flat_length=0.05, crown_radius=1, "
+                                    "length=0.16)")
+    assert (crowned.roller.radius, crowned.roller.tilt) == (0.05, 0.0)
+    assert vr.solve(crowned, method="bem", grid=4, speed=1.0).converged
 
 
 @pytest.mark.parametrize("method,grid", [("plane", None), ("line", None), ("bem", 6)])

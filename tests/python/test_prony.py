@@ -89,7 +89,7 @@ def test_the_line_method_solves_a_crowned_roller_on_a_spectrum(scenes_dir):
     """LineSolver<PronyRelaxation>::solve(LineProfileScene) from a scene file: the three terms
     active at every speed, the load's edge peak just past the flat part's ends (|y| = 25 mm)."""
     scene = vr.Scene.from_json(scenes_dir / "crowned_roller_prony_line.json")
-    assert isinstance(scene.material, vr.Prony) and type(scene.roller) is vr.Roller
+    assert isinstance(scene.material, vr.Prony) and type(scene.roller) is vr.Crowned
     s = vr.sweep(scene, threads=1)
     assert s["converged"].all() and list(s["active_terms"]) == [3, 3, 3]
     r = vr.solve(scene, speed=1.0)
