@@ -42,6 +42,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,7 @@
 #include <thread>
 #include <type_traits>
 #include <variant>
+#include <utility>
 #include <vector>
 #include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
@@ -61,11 +63,13 @@
 
 #include "cli/bem_record.hpp"
 #include "cli/engineering.hpp"
+#include "cli/auto_method.hpp"
 #include "cli/line_record.hpp"
 #include "cli/plane_record.hpp"
 #include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
+#include "cli/validity_record.hpp"
 
 extern char** environ;
 
@@ -273,8 +277,42 @@ class Output {
   }
 
   /// Keeps a result; nothing is printed until flush(), so that a run that fails (exit 2: a
-  /// solve rejected its input) prints nothing on stdout, and every line printed stands.
-  void add(Record r) { pending_.push_back(std::move(r)); }
+  /// solve rejected its input) prints nothing on stdout, and every line printed stands. With
+  /// check_validity(facts) set, a breach of the model's assumptions (core/validity.hpp) joins the
+  /// result's warnings and stderr, or with `strict` makes the run an error (exit 2, nothing on
+  /// stdout).
+  void add(Record r) {
+    if (facts_) {
+      const auto breaches = viscoroll::cli::add_validity_warnings(r, *facts_);
+      for (const auto& b : breaches) {
+        if (strict_)
+          throw std::invalid_argument(
+              "viscoroll-solve: --strict: " + record_label(r) + ": " + b +
+              " (without --strict this is a warning; docs/errors.md, \"Validity checks\")");
+        note("viscoroll-solve: warning: " + record_label(r) + ": " + b);
+      }
+    }
+    pending_.push_back(std::move(r));
+  }
+  /// The warnings and the failure of a result chosen by the auto method, for stderr.
+  void note_record(const Record& r) {
+    if (const Value* w = find(r, "warnings"))
+      for (const auto& text : std::get<std::vector<std::string>>(*w))
+        note("viscoroll-solve: warning: " + record_label(r) + ": " + text);
+    if (!converged_record(r)) {
+      const Value* reason = find(r, "reason");
+      note("viscoroll-solve: " + record_label(r) + " did not converge" +
+           (reason ? ": " + std::get<std::string>(*reason) : std::string()));
+    }
+  }
+  /// The results kept so far (not printed), taken: the auto method's choice among them.
+  std::vector<Record> take() { return std::exchange(pending_, {}); }
+  /// Checks every result added from now on against the model's assumptions; `strict`: a breach
+  /// is an error.
+  void check_validity(const viscoroll::cli::ValidityFacts& facts, bool strict) {
+    facts_ = facts;
+    strict_ = strict;
+  }
   /// Keeps a message for stderr (a warning, a solve that did not converge), printed by flush().
   void note(std::string message) { notes_.push_back(std::move(message)); }
 
@@ -463,6 +501,22 @@ class Output {
   std::chrono::steady_clock::time_point start_;
   std::vector<Record> pending_;
   std::vector<std::string> notes_;
+  std::optional<viscoroll::cli::ValidityFacts> facts_;
+  bool strict_ = false;
+
+  /// "<method> solution for tau = T, speed = V" (temperature = T for a prony material).
+  static std::string record_label(const Record& r) {
+    using viscoroll::cli::scene_detail::shortest;
+    const Value* method = find(r, "method");
+    std::string out = (method ? std::get<std::string>(*method) : std::string("the")) +
+                      " solution for ";
+    const double t = real(r, "temperature"), tau = real(r, "tau");
+    if (!std::isnan(t))
+      out += "temperature = " + shortest(t) + ", ";
+    else if (!std::isnan(tau))
+      out += "tau = " + shortest(tau) + ", ";
+    return out + "speed = " + shortest(real(r, "speed"));
+  }
 };
 
 /// The scene as the solvers take it, from options or from a scene file.
@@ -495,8 +549,12 @@ struct Problem {
   bool fast = false;
   /// The rolling radius of energy_per_revolution: the scene file's `radius`, else 1/c1.
   double radius = 0;
-  /// --tolerance (bem): BemOptions::tolerance.
+  /// --tolerance (bem), else the scene file's "tolerance": BemOptions::tolerance.
   std::optional<double> tolerance = std::nullopt;
+  /// The scene file's "density" (kg/m^3): the quasi-static check (core/validity.hpp, (V4)).
+  std::optional<double> density = std::nullopt;
+  /// --strict, or the scene file's "strict": a validity breach is an error.
+  bool strict = false;
 };
 
 /// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
@@ -523,6 +581,7 @@ Problem from_options(const SolveOptions& o) {
   p.fast = setting == viscoroll::cli::LineSetting::fast;
   p.radius = 1 / p.c1;
   p.tolerance = o.tolerance;
+  p.strict = o.strict;
   return p;
 }
 
@@ -595,12 +654,16 @@ void set_prony(Problem& p, const viscoroll::cli::PronyModel& m,
 Problem from_scene(const SolveOptions& o) {
   using namespace viscoroll::cli;
   Scene scene = parse_scene(read_scene_file(o.scene), o.scene);
-  const std::optional<Method> method = o.method ? o.method : scene.method;
-  if (!method)
-    throw std::invalid_argument("viscoroll-solve: " + o.scene +
-                                ": no method: give --method plane|line|bem or \"method\" in the "
-                                "scene");
+  // No method given: the auto method; for the cylinder, the plane method it has.
+  std::optional<Method> method = o.method ? o.method : scene.method;
+  if (!method) method = Method::automatic;
+  if (*method == Method::automatic && std::holds_alternative<CylinderProfile>(scene.roller))
+    method = Method::plane;
   if (o.grid) scene.grid.reset();
+  if (o.grid && *method == Method::automatic)
+    throw std::invalid_argument(
+        "viscoroll-solve: --grid needs --method line or bem (the auto method picks line or bem "
+        "per result, each at its own default)");
   check_scene_for_method(scene, *method, o.scene);
   Problem p;
   p.method = *method;
@@ -610,7 +673,9 @@ Problem from_scene(const SolveOptions& o) {
   const auto setting =
       o.setting.value_or(scene.setting.value_or(viscoroll::cli::LineSetting::standard));
   p.line = line_options(o, setting);
-  p.tolerance = o.tolerance;
+  p.tolerance = o.tolerance ? o.tolerance : scene.tolerance;
+  p.density = scene.density;
+  p.strict = o.strict || scene.strict;
   p.fast = setting == viscoroll::cli::LineSetting::fast;
   p.load = scene.load;
   p.speeds = o.speeds.empty() ? scene.speeds : o.speeds;
@@ -914,8 +979,8 @@ int run_line(const Problem& p, Output& out) {
 }
 
 /// The bem method's relative tolerance in d and chi (BemOptions::tolerance, docs/theory.md
-/// section 17): --tolerance, else 0 (one grid).
-double bem_tolerance(const Problem& p) { return p.tolerance.value_or(0.0); }
+/// section 17): --tolerance (or the scene's), else 0.01 unless a grid is given, which fixes it.
+double bem_tolerance(const Problem& p) { return p.tolerance.value_or(p.grid ? 0.0 : 0.01); }
 
 /// --grid for the bem method: elements per semi-axis, default 16 (8, the refinement's first
 /// grid, with a tolerance).
@@ -1026,6 +1091,101 @@ int run_bem(const Problem& p, Output& out) {
       });
 }
 
+/// What the validity checks need of the problem (cli/validity_record.hpp): the rolling radius,
+/// the roller's body, the rubber's shear-wave speed sqrt(mu_glassy / density) where a density is
+/// given (mu_glassy = (1 - nu)/(2 pi c), c the instantaneous compliance).
+viscoroll::cli::ValidityFacts validity_facts(const Problem& p) {
+  viscoroll::cli::ValidityFacts facts;
+  facts.radius = p.radius;
+  if (p.roller)
+    std::visit(
+        [&](const auto& r) {
+          facts.body_min = r.y_min();
+          facts.body_max = r.y_max();
+        },
+        *p.roller);
+  if (p.density) {
+    const double c = p.prony ? p.prony->instantaneous_compliance()
+                             : material(p, p.tau.front()).instantaneous_compliance();
+    const double nu = p.prony ? p.prony->nu() : p.nu;
+    facts.shear_wave_speed = std::sqrt((1 - nu) / (2 * std::numbers::pi * c) / *p.density);
+  }
+  return facts;
+}
+
+/// The line theory's long-term static contact of the problem (a0, l0; NaN where it has none):
+/// Hertz's for the ellipsoid, static_profile_contact for a roller of finite length.
+viscoroll::cli::LongTermContact line_long_term(const Problem& p) {
+  const auto of = [&](const auto& m) {
+    if (p.roller)
+      return std::visit(
+          [&](const auto& r) { return viscoroll::cli::profile_long_term(r, m, p.load); },
+          *p.roller);
+    const auto h = viscoroll::hertz_contact(p.c1, *p.c2, m.long_term_compliance(), p.load);
+    return viscoroll::cli::LongTermContact{h.a, h.b, h.d};
+  };
+  return p.prony ? of(*p.prony) : of(material(p, p.tau.front()));
+}
+
+/// The auto method (cli/auto_method.hpp): the plane method for a cylinder; else the line method
+/// where its theory applies (line_precheck), each of its results standing unless
+/// line_rejection finds a reason, the bem method (at its default tolerance) for the others.
+/// Every result carries method_reason.
+int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
+  namespace vc = viscoroll::cli;
+  SolveOptions quiet = options;  // the methods' own results go nowhere until chosen
+  quiet.csv.clear();
+  quiet.plot.clear();
+  quiet.profile_out.clear();
+  const std::size_t total =
+      (p.prony ? p.temperatures.size() : p.tau.size()) * p.speeds.size();
+  const auto solve_by = [&](Method m) {
+    Problem q = p;
+    q.method = m;
+    Output scratch(quiet, m, total);
+    const int status = m == Method::plane  ? run_plane(q, scratch)
+                       : m == Method::line ? run_line(q, scratch)
+                                           : run_bem(q, scratch);
+    (void)status;  // the chosen records' own converged fields decide the exit status
+    return scratch.take();
+  };
+  int status = 0;
+  const auto keep = [&](Record r, const std::string& reason) {
+    r = vc::with_method_reason(std::move(r), reason);
+    if (!converged_record(r)) status = 1;
+    out.note_record(r);
+    out.add(std::move(r));
+  };
+  if (!p.c2 && !p.roller) {
+    for (auto& r : solve_by(Method::plane))
+      keep(std::move(r), "auto: plane (a cylinder: the plane problem, exact to rounding)");
+    return status;
+  }
+  const double ratio = p.roller ? 0.0 : *p.c2 / p.c1;
+  std::string why = ratio < 8 * std::exp(-3.0)
+                        ? [&] {
+                            const auto lt = line_long_term(p);
+                            return vc::line_precheck(lt.a, lt.l);
+                          }()
+                        : std::string("c2/c1 >= 8 e^-3: the contact is longer across than along");
+  if (!why.empty()) {
+    for (auto& r : solve_by(Method::bem)) keep(std::move(r), vc::bem_instead(why));
+    return status;
+  }
+  const auto facts = validity_facts(p);
+  std::vector<Record> lines = solve_by(Method::line), bems;
+  std::vector<std::string> rejected;
+  for (const auto& r : lines) rejected.push_back(vc::line_rejection(r, facts));
+  if (std::any_of(rejected.begin(), rejected.end(), [](const auto& w) { return !w.empty(); }))
+    bems = solve_by(Method::bem);
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    if (rejected[k].empty())
+      keep(std::move(lines[k]), vc::line_accepted());
+    else
+      keep(std::move(bems[k]), vc::bem_instead(rejected[k]));
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1045,7 +1205,7 @@ int main(int argc, char** argv) {
     }
     const SolveOptions options = viscoroll::cli::parse_solve_options(args);
     const Problem problem = options.scene.empty() ? from_options(options) : from_scene(options);
-    if (problem.method != Method::line)
+    if (problem.method != Method::line && problem.method != Method::automatic)
       for (const auto& [given, key] :
            {std::pair{bool(options.oversampling), "--oversampling"},
             std::pair{!options.basis.empty(), "--basis"},
@@ -1054,18 +1214,26 @@ int main(int argc, char** argv) {
             std::pair{options.setting.has_value(), "--setting"}})
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
-                                      " is valid only with --method line");
-    if (options.tolerance && problem.method != Method::bem)
+                                      " is valid only with --method line or auto");
+    if (options.tolerance && problem.method != Method::bem && problem.method != Method::automatic)
       throw std::invalid_argument(
-          "viscoroll-solve: --tolerance is valid only with --method bem (the plane method is "
-          "exact to rounding; the line method's error is its theory's: docs/cli.md)");
+          "viscoroll-solve: --tolerance is valid only with --method bem or auto (the plane "
+          "method is exact to rounding; the line method's error is its theory's: docs/cli.md)");
+    if (!options.profile_out.empty() && problem.method == Method::automatic)
+      throw std::invalid_argument(
+          "viscoroll-solve: --profile-out needs --method line or bem (the auto method picks one "
+          "per result)");
     if (!options.profile_out.empty() && problem.method == Method::plane)
       throw std::invalid_argument(
           "viscoroll-solve: --profile-out is valid only with --method line or bem (the contact "
           "along the roller: docs/cli.md)");
+    // The auto method on a cylinder given by options answers by the plane method: its table.
+    const bool cylinder = !problem.c2 && !problem.roller;
     Output out(
-        options, problem.method,
+        options,
+        problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());
+    out.check_validity(validity_facts(problem), problem.strict);
     int status = 0;
     switch (problem.method) {
       case Method::plane:
@@ -1076,6 +1244,9 @@ int main(int argc, char** argv) {
         break;
       case Method::bem:
         status = run_bem(problem, out);
+        break;
+      case Method::automatic:
+        status = run_auto(problem, out, options);
         break;
     }
     return out.finish() ? status : 1;

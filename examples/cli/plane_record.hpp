@@ -2,6 +2,9 @@
 // by viscoroll-solve and the Python bindings so that both print the same record.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "engineering.hpp"
 
 namespace viscoroll::cli {
@@ -26,7 +29,8 @@ Record plane_fields(const Solution& s, const Duty& duty, double seconds) {
   const Record tail = {{"seconds", seconds},
                        {"converged", s.converged},
                        {"iterations", static_cast<long long>(s.iterations)},
-                       {"residual", s.residual}};
+                       {"residual", s.residual},
+                       {"warnings", std::vector<std::string>{}}};
   out.insert(out.end(), tail.begin(), tail.end());
   return out;
 }

@@ -123,6 +123,13 @@ struct Scene {
   std::optional<LineSetting> setting;
   /// The top level's "temperature" (degrees Celsius): a prony material with a shift only.
   std::vector<double> temperatures;
+  /// "tolerance": the bem method's relative accuracy in d and chi (BemOptions::tolerance;
+  /// viscoroll-solve --tolerance replaces it).
+  std::optional<double> tolerance;
+  /// "density" (kg/m^3): the rubber's, for the quasi-static check (core/validity.hpp, (V4)).
+  std::optional<double> density;
+  /// "strict": a result outside its model's assumptions is an error (viscoroll-solve --strict).
+  bool strict = false;
 };
 
 /// The largest scene file read, in bytes (viscoroll::limits::scene_file_bytes).
@@ -277,6 +284,8 @@ inline std::string range_of(std::string_view key) {
       {"load", "load > 0 (N; N/m for the plane method; finite)"},
       {"speeds", "speed >= 0 (m/s, finite)"},
       {"grid", "1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)"},
+      {"tolerance", "0 (one grid) or 1e-4 <= tolerance <= 0.5 (bem: relative, in d and chi)"},
+      {"density", "density > 0 (kg/m^3, finite)"},
       {"g_inf", "g_inf > 0 (Pa, finite)"},
       {"g", "g >= 0 (Pa, finite)"},
       {"activation_energy", "activation_energy > 0 (J/mol, finite)"},
@@ -651,7 +660,7 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   }
   const ObjectReader top(source, root, "",
                          {"description", "material", "roller", "load", "speeds", "method", "grid",
-                          "setting", "temperature"},
+                          "setting", "temperature", "tolerance", "density", "strict"},
                          "the scene");
   Scene scene;
   if (top.has("description")) scene.description = top.string("description");
@@ -677,7 +686,8 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   if (top.has("method")) {
     const std::string method = top.string("method");
     scene.method = parse_method(method);
-    if (!scene.method) top.fail("method = \"" + method + "\" is not one of plane, line, bem");
+    if (!scene.method)
+      top.fail("method = \"" + method + "\" is not one of plane, line, bem, auto");
   }
   if (top.has("grid")) {
     const json& grid = top.at("grid");
@@ -691,6 +701,20 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
       top.fail("grid = " + grid.dump() + " is outside the valid range " +
                scene_detail::range_of("grid"));
     scene.grid = grid.get<long>();
+  }
+  if (top.has("tolerance")) {
+    const double tol = top.number("tolerance", [](double x) { return x >= 0 && x <= 0.5; });
+    if (!(tol == 0 || tol >= 1e-4))
+      top.fail("tolerance = " + scene_detail::shortest(tol) + " is outside the valid range " +
+               scene_detail::range_of("tolerance"));
+    scene.tolerance = tol;
+  }
+  if (top.has("density")) scene.density = top.number("density", scene_detail::positive);
+  if (top.has("strict")) {
+    const json& strict = top.at("strict");
+    if (!strict.is_boolean())
+      top.fail("strict must be true or false, got " + scene_detail::type_of(strict));
+    scene.strict = strict.get<bool>();
   }
   if (top.has("setting")) {
     const std::string setting = top.string("setting");
@@ -756,7 +780,8 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
     if (method == Method::plane)
       fail(profile + " suits the line and bem methods, not plane (docs/rollers.md)");
   }
-  if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane)
+  if (std::holds_alternative<CylinderProfile>(scene.roller) && method != Method::plane &&
+      method != Method::automatic)
     fail("roller.profile = \"cylinder\" suits the plane method only, not " + m +
          " (the line and bem methods need \"ellipsoid\" with c1 and c2, or a roller of finite "
          "length: crowned, logarithmic, table)");
@@ -773,6 +798,17 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
       fail("roller.c2 = " + scene_detail::shortest(e->c2) +
            " is outside the valid range 1e-10 <= c2/c1 <= 1e10 for the bem method (c2/c1 = " +
            scene_detail::shortest(ratio) + ")");
+  }
+  if (scene.grid && method == Method::automatic)
+    fail("grid = " + std::to_string(*scene.grid) +
+         " needs a method: the auto method picks line or bem per result, each at its own "
+         "default (give \"method\": \"line\" or \"bem\" with a grid)");
+  if (method == Method::automatic && std::get_if<EllipsoidProfile>(&scene.roller)) {
+    const auto& e = std::get<EllipsoidProfile>(scene.roller);
+    if (!(e.c2 / e.c1 >= 1e-10 && e.c2 / e.c1 <= 1e10))
+      fail("roller.c2 = " + scene_detail::shortest(e.c2) +
+           " is outside the valid range 1e-10 <= c2/c1 <= 1e10 (c2/c1 = " +
+           scene_detail::shortest(e.c2 / e.c1) + ")");
   }
   if (scene.grid) {
     const long n = *scene.grid;

@@ -18,7 +18,9 @@
 
 namespace viscoroll::cli {
 
-enum class Method { plane, line, bem };
+/// The methods; `automatic` ("auto") picks line or bem per result (docs/cli.md, "The auto
+/// method"), plane for the cylinder.
+enum class Method { plane, line, bem, automatic };
 
 /// The line method's setting (--setting, a scene file's "setting", Python's setting=): the
 /// defaults, or LineOptions::fast() on 6-point panels (FastLineSolverD) for a material of one
@@ -44,6 +46,7 @@ inline std::optional<Method> parse_method(std::string_view text) {
   if (text == "plane") return Method::plane;
   if (text == "line") return Method::line;
   if (text == "bem") return Method::bem;
+  if (text == "auto") return Method::automatic;
   return std::nullopt;
 }
 
@@ -55,6 +58,8 @@ inline const char* method_name(Method m) {
       return "line";
     case Method::bem:
       return "bem";
+    case Method::automatic:
+      return "auto";
   }
   return "?";
 }
@@ -93,19 +98,22 @@ struct SolveOptions {
   /// --tolerance T (0, or 1e-4 <= T <= 0.5): the bem method's BemOptions::tolerance, the
   /// relative accuracy asked of d and chi, refining from --grid (default 8); none or 0: one grid.
   std::optional<double> tolerance;
+  /// --strict: a result outside its model's assumptions (core/validity.hpp) is an error, exit 2,
+  /// not a warning.
+  bool strict = false;
 };
 
 inline std::string usage() {
-  return "usage: viscoroll-solve --method plane|line|bem --mu-d M --nu N --f F --tau T[,T...] "
+  return "usage: viscoroll-solve --method plane|line|bem|auto --mu-d M --nu N --f F --tau T[,T...] "
          "--speed V[,V...] --c1 C1 [--c2 C2] --load P [--grid N] [--format json|table] "
          "[--csv FILE] [--plot DIR] [--threads N] [--oversampling K] [--basis t2|s|mapped] "
          "[--max-iterations N] [--quadrature-tolerance TOL] [--setting default|fast] "
-         "[--tolerance T]\n"
-         "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem] [--grid N] "
+         "[--tolerance T] [--strict]\n"
+         "   or: viscoroll-solve --scene FILE.json [--method plane|line|bem|auto] [--grid N] "
          "[--speed V[,V...]] [--temperature T[,T...]] [--format json|table] [--csv FILE] "
          "[--plot DIR] [--profile-out FILE.csv] [--threads N] [--oversampling K] "
          "[--basis t2|s|mapped] [--max-iterations N] [--quadrature-tolerance TOL] "
-         "[--setting default|fast] [--tolerance T]";
+         "[--setting default|fast] [--tolerance T] [--strict]";
 }
 
 /// A finite number, the whole of `text`.
@@ -172,8 +180,14 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
     return std::invalid_argument("viscoroll-solve: unknown option '" + std::string(key) + "'; " +
                                  usage());
   };
+  SolveOptions o;
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string_view key = args[i], value;
+    if (key == "--strict") {  // the one flag: no value
+      if (o.strict) throw std::invalid_argument("viscoroll-solve: --strict given twice");
+      o.strict = true;
+      continue;
+    }
     if (const auto eq = key.find('='); key.starts_with("--") && eq != std::string_view::npos) {
       value = key.substr(eq + 1);
       key = key.substr(0, eq);
@@ -193,7 +207,6 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
       throw std::invalid_argument("viscoroll-solve: missing " + std::string(key) + "; " + usage());
     return it->second;
   };
-  SolveOptions o;
   if (given.count("--scene")) {
     o.scene = std::string(given["--scene"]);
     if (o.scene.empty())
@@ -204,15 +217,16 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
             "viscoroll-solve: --scene excludes " + std::string(key) +
             " (the scene file gives the material, the roller and the load; only --method, "
             "--grid, --speed, --temperature, --format, --csv, --plot, --profile-out, --threads, "
-            "--oversampling, --basis, --max-iterations, --quadrature-tolerance, --setting and "
-            "--tolerance may go with it)");
+            "--oversampling, --basis, --max-iterations, --quadrature-tolerance, --setting, "
+            "--tolerance and --strict may go with it)");
   }
   if (given.count("--method") || o.scene.empty()) {
     const std::string_view method = required("--method");
     o.method = parse_method(method);
     if (!o.method)
-      throw std::invalid_argument("viscoroll-solve: --method expects plane, line or bem, got '" +
-                                  std::string(method) + "'");
+      throw std::invalid_argument(
+          "viscoroll-solve: --method expects plane, line, bem or auto, got '" +
+          std::string(method) + "'");
   }
   if (o.scene.empty()) {
     o.mu_d = parse_number("--mu-d", required("--mu-d"));

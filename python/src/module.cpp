@@ -221,6 +221,8 @@ cli::Method to_cli(Method m) {
       return cli::Method::line;
     case Method::bem:
       return cli::Method::bem;
+    case Method::automatic:
+      return cli::Method::automatic;
   }
   return cli::Method::plane;
 }
@@ -532,6 +534,8 @@ SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long>
       return solve_line(scene, speed, n, fast, seed);
     case Method::bem:
       return solve_bem(scene, speed, n, seed);
+    case Method::automatic:
+      break;
   }
   throw std::logic_error("viscoroll: unknown method");
 }
@@ -1353,6 +1357,8 @@ PYBIND11_MODULE(_viscoroll, m) {
                   return sweep_line(scene, v, n, fast, stoppable);
                 case Method::bem:
                   return sweep_bem(scene, v, n, stoppable);
+                case Method::automatic:
+                  break;
               }
               throw std::logic_error("viscoroll: unknown method");
             },

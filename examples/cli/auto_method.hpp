@@ -1,0 +1,89 @@
+// The auto method (docs/cli.md, "The auto method"), shared by viscoroll-solve and the Python
+// bindings: a scene is solved by the line method where its theory applies and its answer stands,
+// by the bem method (to its default tolerance, 1% in d and chi) otherwise; a cylinder by the
+// plane method, the only one it has. The rules, from the measured model errors (docs/theory.md
+// section 18):
+//   - before any solve, the line theory needs a slender long-term contact, l0/a0 >= 3.6 (V3: its
+//     error in d is below 0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller;
+//   - a line result stands if it converged to a root (not a least-squares minimum) without a
+//     warning, its contact slender (V3) and inside the roller (V2).
+// Every result of the auto method carries `method_reason`: why its method answered.
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <variant>
+#include <vector>
+#include <viscoroll/core/validity.hpp>
+
+#include "validity_record.hpp"
+
+namespace viscoroll::cli {
+
+/// Why the line method does not apply to a scene whose long-term static contact (the line
+/// theory's, or Hertz's for the ellipsoid) has half width `a0` and half length `l0` (NaN: the
+/// line theory found none inside the roller), or empty.
+inline std::string line_precheck(double a0, double l0) {
+  if (!(std::isfinite(a0) && std::isfinite(l0) && a0 > 0))
+    return "the line theory's long-term static contact reaches the roller's end";
+  const double limit = ValidityLimits<double>::slenderness;
+  if (!(l0 / a0 >= limit)) {
+    std::ostringstream s;
+    s.precision(3);
+    s << "the long-term contact is not slender: l0/a0 = " << l0 / a0 << " < " << limit
+      << " (the line theory's error in d would exceed 1%)";
+    return s.str();
+  }
+  return {};
+}
+
+/// Why the line method's `record` cannot answer for the auto method (empty: it stands).
+template <class Record>
+std::string line_rejection(const Record& record, const ValidityFacts& facts) {
+  bool converged = false, root = true;
+  std::string reason;
+  std::vector<std::string> warnings;
+  for (const auto& [name, value] : record) {
+    if (name == "converged")
+      if (const auto* b = std::get_if<bool>(&value)) converged = *b;
+    if (name == "root")
+      if (const auto* b = std::get_if<bool>(&value)) root = *b;
+    if (name == "reason")
+      if (const auto* s = std::get_if<std::string>(&value)) reason = *s;
+    if (name == "warnings")
+      if (const auto* w = std::get_if<std::vector<std::string>>(&value)) warnings = *w;
+  }
+  if (!converged) return "the line method did not converge (" + reason + ")";
+  if (!root) return "the line equations have no root here (a least-squares minimum)";
+  if (!warnings.empty()) return "the line method warned: " + warnings.front();
+  for (const auto& b : record_breaches(record, facts))
+    if (b.check == ValidityCheck::slenderness || b.check == ValidityCheck::roller_length)
+      return b.message;
+  return {};
+}
+
+/// The reason a line record that stands gives.
+inline std::string line_accepted() {
+  return "auto: line (the line theory applies: a slender contact inside the roller, a root, no "
+         "warning)";
+}
+
+/// The reason a bem record gives when the line method could not answer, `why`.
+inline std::string bem_instead(const std::string& why) { return "auto: bem (" + why + ")"; }
+
+/// `record` with the field `method_reason` after its `method`.
+template <class Record>
+Record with_method_reason(Record record, const std::string& reason) {
+  for (auto it = record.begin(); it != record.end(); ++it) {
+    const auto& [name, value] = *it;
+    if (name == "method") {
+      record.insert(it + 1, typename Record::value_type{"method_reason", reason});
+      return record;
+    }
+  }
+  record.insert(record.begin(), typename Record::value_type{"method_reason", reason});
+  return record;
+}
+
+}  // namespace viscoroll::cli

@@ -1,0 +1,82 @@
+// The model validity checks (core/validity.hpp, docs/theory.md section 18) on a result record of
+// any method, shared by viscoroll-solve and the Python bindings: the record's contact against the
+// scene's roller and rubber. A breach joins the record's warnings (a field `warnings` is added to
+// a record that has none); --strict (Python strict=True) makes it an error.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+#include <viscoroll/core/validity.hpp>
+
+namespace viscoroll::cli {
+
+/// What the checks need of the scene besides the record: the roller's radius across (a scene
+/// file's `radius`, else 1/c1), where its body ends along y (+-inf: the ellipsoid, the cylinder),
+/// and the rubber's shear-wave speed sqrt(mu_glassy / density) where a density is given (else
+/// NaN: not checked).
+struct ValidityFacts {
+  double radius = std::numeric_limits<double>::quiet_NaN();
+  double body_min = -std::numeric_limits<double>::infinity();
+  double body_max = std::numeric_limits<double>::infinity();
+  double shear_wave_speed = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The number of `key` in `record` (a sequence of (key, value) pairs or fields of a
+/// std::variant holding a double), or NaN.
+template <class Record>
+double record_number(const Record& record, std::string_view key) {
+  for (const auto& [name, value] : record)
+    if (name == key)
+      if (const auto* x = std::get_if<double>(&value)) return *x;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The breaches of the result `record` (converged; its method named by the field `method`)
+/// against `facts`. A result that did not converge has no contact to check: none.
+template <class Record>
+std::vector<ValidityBreach<double>> record_breaches(const Record& record,
+                                                    const ValidityFacts& facts) {
+  bool converged = false, line = false;
+  for (const auto& [name, value] : record) {
+    if (name == "converged")
+      if (const auto* b = std::get_if<bool>(&value)) converged = *b;
+    if (name == "method")
+      if (const auto* s = std::get_if<std::string>(&value)) line = *s == "line";
+  }
+  if (!converged) return {};
+  ValidityInputs<double> in;
+  in.radius = facts.radius;
+  in.a0 = record_number(record, "a0");
+  in.l = record_number(record, "l");
+  in.y_minus = record_number(record, "y_minus");
+  in.y_plus = record_number(record, "y_plus");
+  in.body_min = facts.body_min;
+  in.body_max = facts.body_max;
+  in.line_theory = line;
+  in.speed = record_number(record, "speed");
+  in.shear_wave_speed = facts.shear_wave_speed;
+  return check_validity(in);
+}
+
+/// Adds the breaches' messages to the record's warnings (the field `warnings`, appended when the
+/// record has none) and returns them.
+template <class Record>
+std::vector<std::string> add_validity_warnings(Record& record, const ValidityFacts& facts) {
+  std::vector<std::string> messages;
+  for (const auto& b : record_breaches(record, facts)) messages.push_back(b.message);
+  if (messages.empty()) return messages;
+  for (auto& [name, value] : record)
+    if (name == "warnings")
+      if (auto* list = std::get_if<std::vector<std::string>>(&value)) {
+        list->insert(list->end(), messages.begin(), messages.end());
+        return messages;
+      }
+  record.push_back(typename Record::value_type{"warnings", messages});
+  return messages;
+}
+
+}  // namespace viscoroll::cli
