@@ -282,6 +282,20 @@ class Output {
   /// result's warnings and stderr, or with `strict` makes the run an error (exit 2, nothing on
   /// stdout).
   void add(Record r) {
+    if (!scene_breaches_.empty()) {
+      // The scene's own breaches (scene_breaches): on every result, converged or not.
+      const Value* w = find(r, "warnings");
+      std::vector<std::string> list = w ? std::get<std::vector<std::string>>(*w)
+                                         : std::vector<std::string>{};
+      list.insert(list.begin(), scene_breaches_.begin(), scene_breaches_.end());
+      bool replaced = false;
+      for (auto& field : r)
+        if (field.key == "warnings") {
+          field.value = list;
+          replaced = true;
+        }
+      if (!replaced) r.push_back({"warnings", list});
+    }
     if (facts_) {
       const auto breaches = viscoroll::cli::add_validity_warnings(r, *facts_);
       for (const auto& b : breaches) {
@@ -312,6 +326,12 @@ class Output {
   void check_validity(const viscoroll::cli::ValidityFacts& facts, bool strict) {
     facts_ = facts;
     strict_ = strict;
+  }
+  /// Breaches of the scene itself (its long-term static contact), added to every result's
+  /// warnings and once to stderr.
+  void scene_warnings(std::vector<std::string> breaches) {
+    for (const auto& b : breaches) note("viscoroll-solve: warning: the scene: " + b);
+    scene_breaches_ = std::move(breaches);
   }
   /// Keeps a message for stderr (a warning, a solve that did not converge), printed by flush().
   void note(std::string message) { notes_.push_back(std::move(message)); }
@@ -503,6 +523,7 @@ class Output {
   std::vector<std::string> notes_;
   std::optional<viscoroll::cli::ValidityFacts> facts_;
   bool strict_ = false;
+  std::vector<std::string> scene_breaches_;
 
   /// "<method> solution for tau = T, speed = V" (temperature = T for a prony material).
   static std::string record_label(const Record& r) {
@@ -810,15 +831,17 @@ viscoroll::StandardLinearSolid<double> material(const Problem& p, double tau) {
   return {p.mu_d, p.nu, p.f, tau};
 }
 
-/// The warnings and the failure of one 3-D solution, for stderr.
+/// The warnings and the failure of one 3-D solution, for stderr; `reason`, when given, replaces
+/// the solution's (a line record's, with add_end_hint's words).
 template <class Solution>
-void note_outcome(Output& out, const char* method, const std::string& which, const Solution& s) {
+void note_outcome(Output& out, const char* method, const std::string& which, const Solution& s,
+                  const std::string* reason = nullptr) {
   for (const auto& w : s.warnings)
     out.note(std::string("viscoroll-solve: warning: ") + method + " solution for " + which + ": " +
              w);
   if (!s.converged)
     out.note(std::string("viscoroll-solve: ") + method + " solution for " + which +
-             " did not converge: " + s.reason);
+             " did not converge: " + (reason ? *reason : s.reason));
 }
 
 /// --method needs --c2 (line, bem).
@@ -894,6 +917,8 @@ int line_terms(const Problem& p) {
   return static_cast<int>(n);
 }
 
+viscoroll::cli::ValidityFacts validity_facts(const Problem& p);
+
 /// The line-contact (3-D) solver; for each tau (a prony material: each temperature) the speeds
 /// are swept by viscoroll::sweep: in chunks of 16 in the given order, each speed seeded with the
 /// previous converged iterated solution of its chunk (continuation; a closed form carries no more
@@ -904,6 +929,7 @@ int line_terms(const Problem& p) {
 int run_line(const Problem& p, Output& out) {
   viscoroll::LineOptions options = p.line;
   options.terms = line_terms(p);
+  const auto facts = validity_facts(p);
   // A material of one relaxation time over the scene `scene_at(speed)` builds, by the solver
   // `tag` names (LineSolverD, or FastLineSolverD for the fast setting).
   const auto run_single_on = [&](auto scene_at, auto tag) {
@@ -920,11 +946,13 @@ int run_line(const Problem& p, Output& out) {
           const Record fields =
               viscoroll::cli::line_fields(s, middle, duty(p, scene.speed), options.terms, seconds);
           r.insert(r.end(), fields.begin(), fields.end());
+          viscoroll::cli::add_end_hint(r, facts);
+          const std::string reason = std::get<std::string>(*find(r, "reason"));
           out.add(std::move(r));
           if (out.wants_profile())
             out.add_profile(tau, std::nan(""), scene.speed,
                             s.along_roller(viscoroll::cli::line_profile_stations));
-          note_outcome(out, "line", label(p, tau, scene.speed), s);
+          note_outcome(out, "line", label(p, tau, scene.speed), s, &reason);
         });
   };
   // A prony material at each temperature over the scene `scene_at(speed)` builds.
@@ -948,12 +976,14 @@ int run_line(const Problem& p, Output& out) {
           const Record fields =
               viscoroll::cli::line_fields(s, middle, duty(p, scene.speed), options.terms, seconds);
           r.insert(r.end(), fields.begin(), fields.end());
+          viscoroll::cli::add_end_hint(r, facts);
+          const std::string reason = std::get<std::string>(*find(r, "reason"));
           out.add(std::move(r));
           // p_max is NaN (an empty cell) unless one term is active (along_roller).
           if (out.wants_profile())
             out.add_profile(std::nan(""), temperature, scene.speed,
                             s.along_roller(viscoroll::cli::line_profile_stations));
-          note_outcome(out, "line", temperature_label(p, temperature, scene.speed), s);
+          note_outcome(out, "line", temperature_label(p, temperature, scene.speed), s, &reason);
         });
   };
   const auto run = [&](auto scene_at) {
@@ -1127,6 +1157,44 @@ viscoroll::cli::LongTermContact line_long_term(const Problem& p) {
   return p.prony ? of(*p.prony) : of(material(p, p.tau.front()));
 }
 
+/// The validity checks (V1), (V2) on the scene's long-term static contact, before any solve, in
+/// words that name it: the ellipsoid's Hertz contact; a roller of finite length's line-theory
+/// contact (static_profile_contact), or where that reaches the roller's ends, the width of a
+/// contact along the whole roller, a = sqrt(4 (1 + f) c w / C1) at the load per length
+/// w = W / length (Eq. 47 of a cylinder: the narrowest the contact can be); the cylinder's (plane)
+/// the same at its load per length. A result that does not converge then still says why the
+/// scene is suspect (a modulus in MPa: a contact wider than the roller).
+std::vector<std::string> scene_breaches(const Problem& p) {
+  const auto facts = validity_facts(p);
+  const double compliance = p.prony ? p.prony->long_term_compliance()
+                                    : material(p, p.tau.front()).long_term_compliance();
+  viscoroll::ValidityInputs<double> in;
+  in.radius = facts.radius;
+  in.body_min = facts.body_min;
+  in.body_max = facts.body_max;
+  std::string prefix = "its long-term static contact: ";
+  if (!p.c2 && !p.roller) {
+    in.a0 = std::sqrt(4 * compliance * p.load / p.c1);
+  } else if (!p.roller) {
+    const auto lt = line_long_term(p);
+    in.a0 = lt.a;
+  } else {
+    const auto lt = line_long_term(p);
+    if (std::isfinite(lt.a)) {
+      in.a0 = lt.a;
+      in.y_minus = -lt.l;
+      in.y_plus = lt.l;
+    } else {
+      const double length = facts.body_max - facts.body_min;
+      in.a0 = std::sqrt(4 * compliance * (p.load / length) / p.c1);
+      prefix = "its long-term static contact reaches the roller's ends; along the whole roller ";
+    }
+  }
+  std::vector<std::string> out;
+  for (const auto& b : viscoroll::check_validity(in)) out.push_back(prefix + b.message);
+  return out;
+}
+
 /// The auto method (cli/auto_method.hpp): the plane method for a cylinder; else the line method
 /// where its theory applies (line_precheck), each of its results standing unless
 /// line_rejection finds a reason, the bem method (at its default tolerance) for the others.
@@ -1165,7 +1233,7 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   std::string why = ratio < 8 * std::exp(-3.0)
                         ? [&] {
                             const auto lt = line_long_term(p);
-                            return vc::line_precheck(lt.a, lt.l);
+                            return vc::line_precheck(lt.a, lt.l, validity_facts(p));
                           }()
                         : std::string("c2/c1 >= 8 e^-3: the contact is longer across than along");
   if (!why.empty()) {
@@ -1233,7 +1301,23 @@ int main(int argc, char** argv) {
         options,
         problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());
-    out.check_validity(validity_facts(problem), problem.strict);
+    // The validity checks read a scene file's physical roller (SI units). Options describe the
+    // parabolic problem in any consistent units, often the paper's dimensionless form (C1 = 1,
+    // lengths in a0), where a0/R is not a ratio of the roller: they are not checked.
+    if (!options.scene.empty()) {
+      out.check_validity(validity_facts(problem), problem.strict);
+      auto breaches = scene_breaches(problem);
+      if (problem.strict && !breaches.empty())
+        throw std::invalid_argument("viscoroll-solve: --strict: " + options.scene + ": " +
+                                    breaches.front() +
+                                    " (without --strict this is a warning; docs/errors.md, "
+                                    "\"Validity checks\")");
+      out.scene_warnings(std::move(breaches));
+    }
+    if (options.scene.empty() && options.strict)
+      throw std::invalid_argument(
+          "viscoroll-solve: --strict is valid only with --scene (the validity checks read a scene "
+          "file's roller in SI units; docs/cli.md, \"Validity checks\")");
     int status = 0;
     switch (problem.method) {
       case Method::plane:

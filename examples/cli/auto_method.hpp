@@ -4,7 +4,8 @@
 // plane method, the only one it has. The rules, from the measured model errors (docs/theory.md
 // section 18):
 //   - before any solve, the line theory needs a slender long-term contact, l0/a0 >= 3.6 (V3: its
-//     error in d is below 0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller;
+//     error in d is below 0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller
+//     and ending at least 2.8 a0 before its end (end_loaded);
 //   - a line result stands if it converged to a root (not a least-squares minimum) without a
 //     warning, its contact slender (V3) and inside the roller (V2).
 // Every result of the auto method carries `method_reason`: why its method answered.
@@ -21,12 +22,49 @@
 
 namespace viscoroll::cli {
 
+/// Words a user can act on where the long-term static contact (half width a0, half length l0,
+/// centred on y = 0) ends within 2.8 a0 of the roller's body end (facts): there the line theory
+/// cannot describe the contact's end (its crown intrusion is under the 2.8 a(y) that an edge peak
+/// needs, docs/theory.md section 16, "Edge peaks"); empty otherwise.
+inline std::string end_loaded(double a0, double l0, const ValidityFacts& facts) {
+  if (!(std::isfinite(a0) && std::isfinite(l0))) return {};
+  const double reach = l0 + 2.8 * a0;
+  const bool high = std::isfinite(facts.body_max) && reach >= facts.body_max;
+  const bool low = std::isfinite(facts.body_min) && -reach <= facts.body_min;
+  if (!high && !low) return {};
+  std::ostringstream s;
+  s.precision(4);
+  s << "the long-term contact reaches y = " << (high ? l0 : -l0) << ", within 2.8 a0 = "
+    << 2.8 * a0 << " of the roller's end at y = " << (high ? facts.body_max : facts.body_min)
+    << ": the line theory does not describe an end-loaded contact";
+  return s.str();
+}
+
+/// A line result that did not converge on an end-loaded roller (end_loaded): its `reason` says
+/// so and names the bem method, in words a user can act on.
+template <class Record>
+void add_end_hint(Record& record, const ValidityFacts& facts) {
+  bool converged = true;
+  for (const auto& [name, value] : record)
+    if (name == "converged")
+      if (const auto* b = std::get_if<bool>(&value)) converged = *b;
+  if (converged) return;
+  const std::string end =
+      end_loaded(record_number(record, "a_long_term"), record_number(record, "l0"), facts);
+  if (end.empty()) return;
+  for (auto& [name, value] : record)
+    if (name == "reason")
+      if (auto* text = std::get_if<std::string>(&value))
+        *text += "; " + end + ": use the bem method";
+}
+
 /// Why the line method does not apply to a scene whose long-term static contact (the line
 /// theory's, or Hertz's for the ellipsoid) has half width `a0` and half length `l0` (NaN: the
 /// line theory found none inside the roller), or empty.
-inline std::string line_precheck(double a0, double l0) {
+inline std::string line_precheck(double a0, double l0, const ValidityFacts& facts) {
   if (!(std::isfinite(a0) && std::isfinite(l0) && a0 > 0))
     return "the line theory's long-term static contact reaches the roller's end";
+  if (std::string end = end_loaded(a0, l0, facts); !end.empty()) return end;
   const double limit = ValidityLimits<double>::slenderness;
   if (!(l0 / a0 >= limit)) {
     std::ostringstream s;

@@ -81,7 +81,7 @@ TEST_CASE("cli: malformed scene files exit 2 naming the key, nothing on stdout",
       {"unknown_profile", set_at("/roller/profile", "cone"), "",
        "roller.profile = \"cone\" is not one of ellipsoid, cylinder"},
       {"unknown_method", set_at("/method", "fem"), "",
-       "method = \"fem\" is not one of plane, line, bem"},
+       "method = \"fem\" is not one of plane, line, bem, auto"},
       // Missing keys.
       {"no_material", drop_at("/material"), "", "missing key material"},
       {"no_tau", drop_at("/material/tau"), "", "missing key material.tau"},
@@ -89,7 +89,8 @@ TEST_CASE("cli: malformed scene files exit 2 naming the key, nothing on stdout",
       {"no_c2", drop_at("/roller/c2"), "", "missing key roller.c2"},
       {"no_load", drop_at("/load"), "", "missing key load"},
       {"no_speeds", drop_at("/speeds"), "", "missing key speeds"},
-      {"no_method", drop_at("/method"), "", "no method: give --method"},
+      // No method: the auto method, which takes no grid.
+      {"no_method", drop_at("/method"), "", "grid = 4 needs a method"},
       // Out of range.
       {"mu_d_zero", set_at("/material/mu_d", 0), "",
        "material.mu_d = 0 is outside the valid range mu_d > 0"},

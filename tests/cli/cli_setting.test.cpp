@@ -98,7 +98,7 @@ TEST_CASE("cli: --setting fast is the library's fast setting on 6-point panels",
                          "1", "--speed", "1", "--c1", "1", "--load", "1", "--setting", "fast"});
   CHECK(plane.status == 2);
   CHECK(plane.out.empty());
-  CHECK(plane.err.find("--setting is valid only with --method line") != std::string::npos);
+  CHECK(plane.err.find("--setting is valid only with --method line or auto") != std::string::npos);
 }
 
 TEST_CASE("cli: a scene file's setting is the line method's, --setting replaces it",
