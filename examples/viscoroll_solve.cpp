@@ -49,8 +49,8 @@
 #include <string_view>
 #include <thread>
 #include <type_traits>
-#include <variant>
 #include <utility>
+#include <variant>
 #include <vector>
 #include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
@@ -61,9 +61,9 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/auto_method.hpp"
 #include "cli/bem_record.hpp"
 #include "cli/engineering.hpp"
-#include "cli/auto_method.hpp"
 #include "cli/line_record.hpp"
 #include "cli/plane_record.hpp"
 #include "cli/roller_profile.hpp"
@@ -285,8 +285,8 @@ class Output {
     if (!scene_breaches_.empty()) {
       // The scene's own breaches (scene_breaches): on every result, converged or not.
       const Value* w = find(r, "warnings");
-      std::vector<std::string> list = w ? std::get<std::vector<std::string>>(*w)
-                                         : std::vector<std::string>{};
+      std::vector<std::string> list =
+          w ? std::get<std::vector<std::string>>(*w) : std::vector<std::string>{};
       list.insert(list.begin(), scene_breaches_.begin(), scene_breaches_.end());
       bool replaced = false;
       for (auto& field : r)
@@ -529,8 +529,8 @@ class Output {
   static std::string record_label(const Record& r) {
     using viscoroll::cli::scene_detail::shortest;
     const Value* method = find(r, "method");
-    std::string out = (method ? std::get<std::string>(*method) : std::string("the")) +
-                      " solution for ";
+    std::string out =
+        (method ? std::get<std::string>(*method) : std::string("the")) + " solution for ";
     const double t = real(r, "temperature"), tau = real(r, "tau");
     if (!std::isnan(t))
       out += "temperature = " + shortest(t) + ", ";
@@ -1166,8 +1166,8 @@ viscoroll::cli::LongTermContact line_long_term(const Problem& p) {
 /// scene is suspect (a modulus in MPa: a contact wider than the roller).
 std::vector<std::string> scene_breaches(const Problem& p) {
   const auto facts = validity_facts(p);
-  const double compliance = p.prony ? p.prony->long_term_compliance()
-                                    : material(p, p.tau.front()).long_term_compliance();
+  const double compliance =
+      p.prony ? p.prony->long_term_compliance() : material(p, p.tau.front()).long_term_compliance();
   viscoroll::ValidityInputs<double> in;
   in.radius = facts.radius;
   in.body_min = facts.body_min;
@@ -1205,8 +1205,7 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   quiet.csv.clear();
   quiet.plot.clear();
   quiet.profile_out.clear();
-  const std::size_t total =
-      (p.prony ? p.temperatures.size() : p.tau.size()) * p.speeds.size();
+  const std::size_t total = (p.prony ? p.temperatures.size() : p.tau.size()) * p.speeds.size();
   const auto solve_by = [&](Method m) {
     Problem q = p;
     q.method = m;
@@ -1298,8 +1297,7 @@ int main(int argc, char** argv) {
     // The auto method on a cylinder given by options answers by the plane method: its table.
     const bool cylinder = !problem.c2 && !problem.roller;
     Output out(
-        options,
-        problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
+        options, problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());
     // The validity checks read a scene file's physical roller (SI units). Options describe the
     // parabolic problem in any consistent units, often the paper's dimensionless form (C1 = 1,

@@ -34,8 +34,8 @@ inline std::string end_loaded(double a0, double l0, const ValidityFacts& facts) 
   if (!high && !low) return {};
   std::ostringstream s;
   s.precision(4);
-  s << "the long-term contact reaches y = " << (high ? l0 : -l0) << ", within 2.8 a0 = "
-    << 2.8 * a0 << " of the roller's end at y = " << (high ? facts.body_max : facts.body_min)
+  s << "the long-term contact reaches y = " << (high ? l0 : -l0) << ", within 2.8 a0 = " << 2.8 * a0
+    << " of the roller's end at y = " << (high ? facts.body_max : facts.body_min)
     << ": the line theory does not describe an end-loaded contact";
   return s.str();
 }

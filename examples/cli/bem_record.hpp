@@ -50,8 +50,8 @@ LongTermContact hertz_long_term(const Solution& s) {
 /// built from braces.
 template <class Record, class Solution>
 Record bem_fields(const Solution& s, const AlongRoller<double>& along,
-                  const LongTermContact& long_term, bool axial, const Duty& duty,
-                  double tolerance, double seconds) {
+                  const LongTermContact& long_term, bool axial, const Duty& duty, double tolerance,
+                  double seconds) {
   std::size_t peak = 0;
   for (std::size_t q = 0; q < s.pressure.size(); ++q)
     if (s.pressure[q] > s.pressure[peak]) peak = q;

@@ -686,8 +686,7 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   if (top.has("method")) {
     const std::string method = top.string("method");
     scene.method = parse_method(method);
-    if (!scene.method)
-      top.fail("method = \"" + method + "\" is not one of plane, line, bem, auto");
+    if (!scene.method) top.fail("method = \"" + method + "\" is not one of plane, line, bem, auto");
   }
   if (top.has("grid")) {
     const json& grid = top.at("grid");

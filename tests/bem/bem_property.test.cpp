@@ -263,8 +263,9 @@ void run_bem_cases(int count, std::uint64_t seed, int max_grid, Tally& tally) {
                 << " mu_d " << mu_d << " nu " << nu << " terms" << terms_text << " c1 " << c1
                 << " c2 " << c2 << " load " << load << " speed " << speed << "; grid "
                 << options.grid << " extent " << options.extent << " gmres_tolerance "
-                << options.gmres_tolerance << " max_active_set " << options.max_active_set_iterations
-                << " max_krylov " << options.max_krylov_iterations << " restart " << options.restart
+                << options.gmres_tolerance << " max_active_set "
+                << options.max_active_set_iterations << " max_krylov "
+                << options.max_krylov_iterations << " restart " << options.restart
                 << " precondition " << options.precondition;
     INFO(description.str() << "; invalid: " << bad.size());
     try {

@@ -578,8 +578,8 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
   const Real tol = Real(options_.tolerance);
   // chi's floor: 1e-6 C1 a_H, the long-term Hertz semi-axis in the caller's units.
   const HertzContact<Real> hertz = hertz_in_units(u, material_.creep_ratio());
-  const Real chi_floor = Real(1e-6) * times_power_of_two(u.scene.c1 * hertz.a, u.displacement -
-                                                                                   u.length);
+  const Real chi_floor =
+      Real(1e-6) * times_power_of_two(u.scene.c1 * hertz.a, u.displacement - u.length);
   double setup = 0, seconds = 0;
   std::optional<Solution> coarse, last;
   // The cells' semi-axis across: the long-term Hertz a_H, then the reach of the contact found on
@@ -612,8 +612,8 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
                  .b0 = safety * abs(s.b0 - coarse->b0) + qx,
                  .l = safety * abs(s.l - coarse->l) + qy,
                  .p_max = safety * abs(s.peak_pressure() - coarse->peak_pressure())};
-      s.tolerance_met = s.error.d <= tol * abs(s.d) &&
-                        s.error.chi <= tol * std::max(abs(s.chi), chi_floor);
+      s.tolerance_met =
+          s.error.d <= tol * abs(s.d) && s.error.chi <= tol * std::max(abs(s.chi), chi_floor);
       if (s.tolerance_met) break;
     }
     coarse = s;

@@ -32,10 +32,10 @@ struct ValidityInputs {
   Real radius = none;  ///< the roller's radius across, 1/C1 (m)
   Real a0 = none;      ///< the contact's half width at y = 0 (m)
   Real l = none;       ///< the contact's half length (m): the line theory's slenderness
-  Real y_minus = none, y_plus = none;  ///< the contact's ends along the roller (m)
+  Real y_minus = none, y_plus = none;     ///< the contact's ends along the roller (m)
   Real body_min = none, body_max = none;  ///< the roller body's ends along y (m)
-  bool line_theory = false;  ///< the result is the line method's: (V3) applies
-  Real speed = none;         ///< rolling speed (m/s)
+  bool line_theory = false;               ///< the result is the line method's: (V3) applies
+  Real speed = none;                      ///< rolling speed (m/s)
   /// sqrt(mu_glassy / density), the rubber's fastest shear-wave speed (m/s), where a density is
   /// given.
   Real shear_wave_speed = none;
@@ -99,9 +99,10 @@ std::vector<ValidityBreach<Real>> check_validity(const ValidityInputs<Real>& in)
     if (low || high) {
       const Real end = high ? in.body_max : in.body_min, reach = high ? in.y_plus : in.y_minus;
       out.push_back({ValidityCheck::roller_length, reach, end,
-                     "the contact reaches y = " + text(reach) + ", beyond the roller's end at y = " +
-                         text(end) + ": the load or the compliance is too large for this roller, "
-                                     "or the body is shorter than meant"});
+                     "the contact reaches y = " + text(reach) +
+                         ", beyond the roller's end at y = " + text(end) +
+                         ": the load or the compliance is too large for this roller, "
+                         "or the body is shorter than meant"});
     }
   }
   // (V3) The line theory's slenderness: l/a0.
