@@ -49,8 +49,8 @@
 #include <string_view>
 #include <thread>
 #include <type_traits>
-#include <variant>
 #include <utility>
+#include <variant>
 #include <vector>
 #include <viscoroll/bem/bem_profile.hpp>
 #include <viscoroll/bem/bem_solver.hpp>
@@ -61,9 +61,9 @@
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
 
+#include "cli/auto_method.hpp"
 #include "cli/bem_record.hpp"
 #include "cli/engineering.hpp"
-#include "cli/auto_method.hpp"
 #include "cli/line_record.hpp"
 #include "cli/plane_record.hpp"
 #include "cli/roller_profile.hpp"
@@ -508,8 +508,8 @@ class Output {
   static std::string record_label(const Record& r) {
     using viscoroll::cli::scene_detail::shortest;
     const Value* method = find(r, "method");
-    std::string out = (method ? std::get<std::string>(*method) : std::string("the")) +
-                      " solution for ";
+    std::string out =
+        (method ? std::get<std::string>(*method) : std::string("the")) + " solution for ";
     const double t = real(r, "temperature"), tau = real(r, "tau");
     if (!std::isnan(t))
       out += "temperature = " + shortest(t) + ", ";
@@ -1108,7 +1108,7 @@ viscoroll::cli::ValidityFacts validity_facts(const Problem& p) {
     const double c = p.prony ? p.prony->instantaneous_compliance()
                              : material(p, p.tau.front()).instantaneous_compliance();
     const double nu = p.prony ? p.prony->nu() : p.nu;
-    facts.shear_wave_speed = std::sqrt((1 - nu) / (2 * std::numbers::pi * c) / *p.density);
+    facts.shear_wave_speed = viscoroll::cli::shear_wave_speed(c, nu, *p.density);
   }
   return facts;
 }
@@ -1137,8 +1137,7 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   quiet.csv.clear();
   quiet.plot.clear();
   quiet.profile_out.clear();
-  const std::size_t total =
-      (p.prony ? p.temperatures.size() : p.tau.size()) * p.speeds.size();
+  const std::size_t total = (p.prony ? p.temperatures.size() : p.tau.size()) * p.speeds.size();
   const auto solve_by = [&](Method m) {
     Problem q = p;
     q.method = m;
@@ -1157,17 +1156,14 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
     out.add(std::move(r));
   };
   if (!p.c2 && !p.roller) {
-    for (auto& r : solve_by(Method::plane))
-      keep(std::move(r), "auto: plane (a cylinder: the plane problem, exact to rounding)");
+    for (auto& r : solve_by(Method::plane)) keep(std::move(r), vc::plane_cylinder());
     return status;
   }
-  const double ratio = p.roller ? 0.0 : *p.c2 / p.c1;
-  std::string why = ratio < 8 * std::exp(-3.0)
-                        ? [&] {
-                            const auto lt = line_long_term(p);
-                            return vc::line_precheck(lt.a, lt.l);
-                          }()
-                        : std::string("c2/c1 >= 8 e^-3: the contact is longer across than along");
+  std::string why = p.roller ? std::string() : vc::ellipsoid_precheck(p.c1, *p.c2);
+  if (why.empty()) {
+    const auto lt = line_long_term(p);
+    why = vc::line_precheck(lt.a, lt.l);
+  }
   if (!why.empty()) {
     for (auto& r : solve_by(Method::bem)) keep(std::move(r), vc::bem_instead(why));
     return status;
@@ -1230,8 +1226,7 @@ int main(int argc, char** argv) {
     // The auto method on a cylinder given by options answers by the plane method: its table.
     const bool cylinder = !problem.c2 && !problem.roller;
     Output out(
-        options,
-        problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
+        options, problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());
     out.check_validity(validity_facts(problem), problem.strict);
     int status = 0;

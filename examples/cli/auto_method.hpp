@@ -21,6 +21,18 @@
 
 namespace viscoroll::cli {
 
+/// The reason a plane record gives for a cylinder (the auto method's only choice there).
+inline std::string plane_cylinder() {
+  return "auto: plane (a cylinder: the plane problem, exact to rounding)";
+}
+
+/// Why the line method does not apply to the ellipsoid of curvatures `c1` across and `c2` along
+/// (its theory needs c2 < 8 e^-3 c1, LineScene::validate), or empty.
+inline std::string ellipsoid_precheck(double c1, double c2) {
+  if (c2 / c1 < 8 * std::exp(-3.0)) return {};
+  return "c2/c1 >= 8 e^-3: the contact is longer across than along";
+}
+
 /// Why the line method does not apply to a scene whose long-term static contact (the line
 /// theory's, or Hertz's for the ellipsoid) has half width `a0` and half length `l0` (NaN: the
 /// line theory found none inside the roller), or empty.

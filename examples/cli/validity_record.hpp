@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -24,6 +25,12 @@ struct ValidityFacts {
   double body_max = std::numeric_limits<double>::infinity();
   double shear_wave_speed = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// The rubber's shear-wave speed sqrt(mu_glassy / density) for ValidityFacts, mu_glassy =
+/// (1 - nu)/(2 pi c) from the material's instantaneous compliance `c` and Poisson's ratio `nu`.
+inline double shear_wave_speed(double c, double nu, double density) {
+  return std::sqrt((1 - nu) / (2 * std::numbers::pi * c) / density);
+}
 
 /// The number of `key` in `record` (a sequence of (key, value) pairs or fields of a
 /// std::variant holding a double), or NaN.
