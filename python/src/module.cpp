@@ -620,6 +620,10 @@ int auto_grid(const SceneSpec& scene, double tolerance) {
 /// the plane method for a cylinder. `start` seeds the method it is a result of.
 SolvedPtr solve_auto(const SceneSpec& scene, double speed, bool fast, double tolerance,
                      const Solved* start) {
+  if (start && start->method() == Method::plane)
+    throw std::invalid_argument(
+        "viscoroll: start must be a result of the line or bem method for the auto method, got "
+        "plane");
   const auto seed = [&](Method m) { return start && start->method() == m ? start : nullptr; };
   if (scene.roller.cylinder) return with_reason(solve_plane(scene, speed), cli::plane_cylinder());
   const auto bem = [&](const std::string& why) {
@@ -1645,7 +1649,13 @@ PYBIND11_MODULE(_viscoroll, m) {
               throw std::logic_error("viscoroll: unknown method");
             },
             true);
-        warn(check_validity(solved, scene, strict.value_or(scene.strict)));
+        // One Python warning for the sweep (a sweep may have thousands of results).
+        std::vector<std::string> breaches =
+            check_validity(solved, scene, strict.value_or(scene.strict));
+        if (breaches.size() > 1)
+          breaches = {breaches.front() + " (and " + std::to_string(breaches.size() - 1) +
+                      " more breaches in this sweep: see its warnings)"};
+        warn(breaches);
         py::dict out = to_columns(solved, which == Method::automatic);
         if (with_results) {
           py::list results;
