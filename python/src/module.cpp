@@ -1036,10 +1036,10 @@ ValueError
 Example
 -------
 >>> import viscoroll as vr
->>> scene = vr.Scene(material=vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0),
-...                  roller=vr.Ellipsoid(c1=1.0, c2=0.0798), load=0.0582)
+>>> scene = vr.Scene(material=vr.StandardLinearSolid(mu_d=3.0e6, nu=0.5, f=9.0, tau=0.01),
+...                  roller=vr.Ellipsoid(c1=20.0, c2=1.596582), load=20.0)
 >>> r = vr.solve(scene, speed=1.0)
->>> r.converged, r.a0, r.chi
+>>> r.method, r.method_reason, r.converged, r.a0, r.chi
 )doc";
 
 constexpr const char* sweep_doc = R"doc(

@@ -42,12 +42,11 @@ roller, which travels towards +x; x is measured from its axis. Any consistent un
 Example
 -------
 >>> import numpy as np, viscoroll as vr
->>> mat = vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0)
->>> scene = vr.Scene(material=mat, roller=vr.Ellipsoid(c1=1.0, c2=0.0798),
-...                  load=5 / (3 * 10 * mat.instantaneous_compliance))
+>>> mat = vr.StandardLinearSolid(mu_d=3.0e6, nu=0.5, f=9.0, tau=0.01)   # SI units
+>>> scene = vr.Scene(material=mat, roller=vr.Ellipsoid(c1=20.0, c2=1.596582), load=20.0)
 >>> r = vr.solve(scene, speed=1.0)              # auto: here the line method, 6 Chebyshev terms
->>> r.converged, r.a0, r.chi
->>> p = r.pressure(np.linspace(-1, 1, 5), 0.0)  # float64 array of shape (5,)
+>>> r.method, r.method_reason, r.converged, r.a0, r.chi
+>>> p = r.pressure(np.linspace(-0.005, 0.005, 5), 0.0)  # float64 array of shape (5,)
 >>> s = vr.sweep(scene, speeds=np.logspace(-3, 3, 61))   # all cores, GIL released
 >>> s["chi"].shape, s["converged"].all()
 
