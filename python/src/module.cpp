@@ -27,6 +27,7 @@
 #include <utility>
 #include <variant>
 #include <vector>
+#include <viscoroll/bem/bem_scene.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/input_limits.hpp>
 #include <viscoroll/line/line_options.hpp>
@@ -266,14 +267,13 @@ int check_for_method(const SceneSpec& scene, Method method, std::optional<long> 
 /// The bem method's relative tolerance in d and chi (BemOptions::tolerance, docs/theory.md
 /// section 17): the caller's `given`, else the scene's, else 0.01 unless a grid is given (the
 /// caller's or the scene's), which fixes it; as viscoroll-solve's bem_tolerance. `given` must be
-/// 0 or in [1e-4, 0.5], with the bem or auto method.
+/// in BemOptions' range, with the bem or auto method.
 double tolerance_for(const SceneSpec& scene, std::optional<double> given, Method method,
                      std::optional<long> grid) {
   if (given) {
-    if (!(*given == 0 || (*given >= 1e-4 && *given <= 0.5)))
-      throw std::invalid_argument("viscoroll: tolerance = " + shortest(*given) +
-                                  " is outside the valid range " +
-                                  cli::scene_detail::range_of("tolerance"));
+    BemOptions options;
+    options.tolerance = *given;
+    options.validate();  // the library's range and message
     if (method != Method::bem && method != Method::automatic)
       throw std::invalid_argument(
           std::string("viscoroll: tolerance is valid only with the bem or auto method, got "
