@@ -3,8 +3,9 @@
 // by the bem method (to its default tolerance, 1% in d and chi) otherwise; a cylinder by the
 // plane method, the only one it has. The rules, from the measured model errors (docs/theory.md
 // section 18):
-//   - before any solve, the line theory needs a slender long-term contact, l0/a0 >= 3.6 (V3: its
-//     error in d is below 0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller;
+//   - before any solve, the ellipsoid needs c2 < 8 e^-3 c1 (the line theory's domain), and the
+//     line theory a slender long-term contact, l0/a0 >= 3.6 (V3: its error in d is below
+//     0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller;
 //   - a line result stands if it converged to a root (not a least-squares minimum) without a
 //     warning, its contact slender (V3) and inside the roller (V2).
 // Every result of the auto method carries `method_reason`: why its method answered.
