@@ -1138,7 +1138,7 @@ viscoroll::cli::ValidityFacts validity_facts(const Problem& p) {
     const double c = p.prony ? p.prony->instantaneous_compliance()
                              : material(p, p.tau.front()).instantaneous_compliance();
     const double nu = p.prony ? p.prony->nu() : p.nu;
-    facts.shear_wave_speed = std::sqrt((1 - nu) / (2 * std::numbers::pi * c) / *p.density);
+    facts.shear_wave_speed = viscoroll::cli::shear_wave_speed(c, nu, *p.density);
   }
   return facts;
 }
@@ -1165,34 +1165,15 @@ viscoroll::cli::LongTermContact line_long_term(const Problem& p) {
 /// the same at its load per length. A result that does not converge then still says why the
 /// scene is suspect (a modulus in MPa: a contact wider than the roller).
 std::vector<std::string> scene_breaches(const Problem& p) {
-  const auto facts = validity_facts(p);
   const double compliance =
       p.prony ? p.prony->long_term_compliance() : material(p, p.tau.front()).long_term_compliance();
-  viscoroll::ValidityInputs<double> in;
-  in.radius = facts.radius;
-  in.body_min = facts.body_min;
-  in.body_max = facts.body_max;
-  std::string prefix = "its long-term static contact: ";
-  if (!p.c2 && !p.roller) {
-    in.a0 = std::sqrt(4 * compliance * p.load / p.c1);
-  } else if (!p.roller) {
-    const auto lt = line_long_term(p);
-    in.a0 = lt.a;
-  } else {
-    const auto lt = line_long_term(p);
-    if (std::isfinite(lt.a)) {
-      in.a0 = lt.a;
-      in.y_minus = -lt.l;
-      in.y_plus = lt.l;
-    } else {
-      const double length = facts.body_max - facts.body_min;
-      in.a0 = std::sqrt(4 * compliance * (p.load / length) / p.c1);
-      prefix = "its long-term static contact reaches the roller's ends; along the whole roller ";
-    }
-  }
-  std::vector<std::string> out;
-  for (const auto& b : viscoroll::check_validity(in)) out.push_back(prefix + b.message);
-  return out;
+  const bool cylinder = !p.c2 && !p.roller;
+  const auto lt = cylinder
+                      ? viscoroll::cli::LongTermContact{std::sqrt(4 * compliance * p.load / p.c1),
+                                                        std::nan(""), std::nan("")}
+                      : line_long_term(p);
+  return viscoroll::cli::scene_breaches(validity_facts(p), lt.a, p.roller ? lt.l : std::nan(""),
+                                        compliance, p.load, p.c1);
 }
 
 /// The auto method (cli/auto_method.hpp): the plane method for a cylinder; else the line method
@@ -1224,17 +1205,14 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
     out.add(std::move(r));
   };
   if (!p.c2 && !p.roller) {
-    for (auto& r : solve_by(Method::plane))
-      keep(std::move(r), "auto: plane (a cylinder: the plane problem, exact to rounding)");
+    for (auto& r : solve_by(Method::plane)) keep(std::move(r), vc::plane_cylinder());
     return status;
   }
-  const double ratio = p.roller ? 0.0 : *p.c2 / p.c1;
-  std::string why = ratio < 8 * std::exp(-3.0)
-                        ? [&] {
-                            const auto lt = line_long_term(p);
-                            return vc::line_precheck(lt.a, lt.l, validity_facts(p));
-                          }()
-                        : std::string("c2/c1 >= 8 e^-3: the contact is longer across than along");
+  std::string why = p.roller ? std::string() : vc::ellipsoid_precheck(p.c1, *p.c2);
+  if (why.empty()) {
+    const auto lt = line_long_term(p);
+    why = vc::line_precheck(lt.a, lt.l, validity_facts(p));
+  }
   if (!why.empty()) {
     for (auto& r : solve_by(Method::bem)) keep(std::move(r), vc::bem_instead(why));
     return status;

@@ -3,9 +3,10 @@
 // by the bem method (to its default tolerance, 1% in d and chi) otherwise; a cylinder by the
 // plane method, the only one it has. The rules, from the measured model errors (docs/theory.md
 // section 18):
-//   - before any solve, the line theory needs a slender long-term contact, l0/a0 >= 3.6 (V3: its
-//     error in d is below 0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller
-//     and ending at least 2.8 a0 before its end (end_loaded);
+//   - before any solve, the ellipsoid needs c2 < 8 e^-3 c1 (the line theory's domain), and the
+//     line theory a slender long-term contact, l0/a0 >= 3.6 (V3: its error in d is below
+//     0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller and ending at least
+//     2.8 a0 before its end (end_loaded);
 //   - a line result stands if it converged to a root (not a least-squares minimum) without a
 //     warning, its contact slender (V3) and inside the roller (V2).
 // Every result of the auto method carries `method_reason`: why its method answered.
@@ -56,6 +57,18 @@ void add_end_hint(Record& record, const ValidityFacts& facts) {
     if (name == "reason")
       if (auto* text = std::get_if<std::string>(&value))
         *text += "; " + end + ": use the bem method";
+}
+
+/// The reason a plane record gives for a cylinder (the auto method's only choice there).
+inline std::string plane_cylinder() {
+  return "auto: plane (a cylinder: the plane problem, exact to rounding)";
+}
+
+/// Why the line method does not apply to the ellipsoid of curvatures `c1` across and `c2` along
+/// (its theory needs c2 < 8 e^-3 c1, LineScene::validate), or empty.
+inline std::string ellipsoid_precheck(double c1, double c2) {
+  if (c2 / c1 < 8 * std::exp(-3.0)) return {};
+  return "c2/c1 >= 8 e^-3: the contact is longer across than along";
 }
 
 /// Why the line method does not apply to a scene whose long-term static contact (the line

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -24,6 +25,12 @@ struct ValidityFacts {
   double body_max = std::numeric_limits<double>::infinity();
   double shear_wave_speed = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// The rubber's shear-wave speed sqrt(mu_glassy / density) for ValidityFacts, mu_glassy =
+/// (1 - nu)/(2 pi c) from the material's instantaneous compliance `c` and Poisson's ratio `nu`.
+inline double shear_wave_speed(double c, double nu, double density) {
+  return std::sqrt((1 - nu) / (2 * std::numbers::pi * c) / density);
+}
 
 /// The number of `key` in `record` (a sequence of (key, value) pairs or fields of a
 /// std::variant holding a double), or NaN.
@@ -77,6 +84,36 @@ std::vector<std::string> add_validity_warnings(Record& record, const ValidityFac
       }
   record.push_back(typename Record::value_type{"warnings", messages});
   return messages;
+}
+
+/// (V1), (V2) on a scene's long-term static contact, before any solve, so that a result that
+/// does not converge still says why the scene is suspect: the contact of half width `a0` and
+/// half length `l0` (the ellipsoid's Hertz contact, a roller's line-theory contact; l0 NaN: not
+/// checked along the roller, the cylinder's); where the line theory has none on a roller of
+/// finite length (a0 NaN: it reaches the roller's ends), the narrowest contact along the whole
+/// roller, a = sqrt(4 C w / c1) at the load per length w = load / (body_max - body_min) (the
+/// cylinder's Eq. 47, C the long-term compliance). Each message starts with what was checked.
+inline std::vector<std::string> scene_breaches(const ValidityFacts& facts, double a0, double l0,
+                                               double long_term_compliance, double load,
+                                               double c1) {
+  ValidityInputs<double> in;
+  in.radius = facts.radius;
+  in.body_min = facts.body_min;
+  in.body_max = facts.body_max;
+  std::string prefix = "its long-term static contact: ";
+  if (std::isfinite(a0)) {
+    in.a0 = a0;
+    if (std::isfinite(l0)) {
+      in.y_minus = -l0;
+      in.y_plus = l0;
+    }
+  } else if (std::isfinite(facts.body_max - facts.body_min)) {
+    in.a0 = std::sqrt(4 * long_term_compliance * (load / (facts.body_max - facts.body_min)) / c1);
+    prefix = "its long-term static contact reaches the roller's ends; along the whole roller ";
+  }
+  std::vector<std::string> out;
+  for (const auto& b : check_validity(in)) out.push_back(prefix + b.message);
+  return out;
 }
 
 }  // namespace viscoroll::cli

@@ -67,6 +67,14 @@ struct SceneSpec {
   /// solve() and sweep().
   std::optional<cli::LineSetting> setting;
   std::string description;
+  /// A scene file's "tolerance": the bem method's default relative accuracy in d and chi
+  /// (BemOptions::tolerance) in solve() and sweep().
+  std::optional<double> tolerance;
+  /// The rubber's density (a scene file's "density", Scene(density=...)): the quasi-static
+  /// check (core/validity.hpp, (V4)); none: not checked.
+  std::optional<double> density;
+  /// A scene file's "strict": a validity breach is an error in solve() and sweep().
+  bool strict = false;
   std::string source = "Scene";  ///< starts the messages of method-dependent checks
   /// A Prony material's temperature (degrees Celsius): its shift law's t_ref by default; NaN
   /// without a shift law (the material is its reference).
@@ -160,8 +168,10 @@ using SolvedPtr = std::shared_ptr<const Solved>;
 
 /// The solver's discretisation for `method` from the scene's or the caller's grid: line terms
 /// (1..64, default 6; 4 for a Prony material, as the command line), bem elements per semi-axis
-/// (2..512, default 16); throws std::invalid_argument naming `grid`.
-int discretisation(Method method, std::optional<long> grid, bool prony, bool fast = false);
+/// (2..512, default 16; 8, the refinement's first grid, with a `tolerance`); throws
+/// std::invalid_argument naming `grid`.
+int discretisation(Method method, std::optional<long> grid, bool prony, bool fast = false,
+                   double tolerance = 0);
 
 /// Seconds since `start`.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -258,7 +268,9 @@ SolvedPtr solve_plane(const SceneSpec& scene, double speed);
 /// one relaxation time).
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
                      const Solved* start);
-SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start);
+/// tolerance: BemOptions::tolerance (0: the one grid `grid`; else refined from it).
+SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, double tolerance,
+                    const Solved* start);
 /// The cell centres x (nx), y (ny) and pressures (ny x nx, row-major) of a bem result; false for
 /// another method.
 bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>& y,
@@ -270,6 +282,14 @@ std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const doubl
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   bool fast, const SweepOptions& options);
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
-                                 const SweepOptions& options);
+                                 double tolerance, const SweepOptions& options);
+
+/// The half width a0 and half length l0 of the line theory's static long-term contact of the
+/// scene (solve_bem.cpp): Hertz's for the ellipsoid, static_profile_contact for a roller of
+/// finite length (NaN where it has none), as viscoroll-solve's line_long_term; what
+/// cli::line_precheck judges.
+std::pair<double, double> line_long_term(const SceneSpec& scene);
+/// Where the body of the scene's roller ends along y (+-inf: the ellipsoid, the cylinder).
+std::pair<double, double> roller_body(const SceneSpec& scene);
 
 }  // namespace viscoroll::python

@@ -22,10 +22,12 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
+#include <viscoroll/bem/bem_scene.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/input_limits.hpp>
 #include <viscoroll/line/line_options.hpp>
@@ -35,9 +37,11 @@
 #include <viscoroll/plane/plane_solver.hpp>
 
 #include "bindings.hpp"
+#include "cli/auto_method.hpp"
 #include "cli/plane_record.hpp"
 #include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
+#include "cli/validity_record.hpp"
 
 #ifndef VISCOROLL_PYTHON_VERSION
 #define VISCOROLL_PYTHON_VERSION "0"
@@ -47,7 +51,8 @@ namespace py = pybind11;
 
 namespace viscoroll::python {
 
-int discretisation(Method method, std::optional<long> grid, bool prony, bool fast) {
+int discretisation(Method method, std::optional<long> grid, bool prony, bool fast,
+                   double tolerance) {
   if (method == Method::line) {
     const long n = grid.value_or(prony ? 4 : fast ? LineOptions::fast().terms : 6);
     if (n < 1 || n > 64)
@@ -57,7 +62,7 @@ int discretisation(Method method, std::optional<long> grid, bool prony, bool fas
     return static_cast<int>(n);
   }
   if (method == Method::bem) {
-    const long n = grid.value_or(16);
+    const long n = grid.value_or(tolerance > 0 ? 8 : 16);
     if (n < 2 || n > 512)
       throw std::invalid_argument(
           "viscoroll: grid = " + std::to_string(n) +
@@ -193,8 +198,9 @@ std::optional<Method> parse_method(const std::optional<std::string>& name) {
   if (*name == "plane") return Method::plane;
   if (*name == "line") return Method::line;
   if (*name == "bem") return Method::bem;
+  if (*name == "auto") return Method::automatic;
   throw std::invalid_argument("viscoroll: method = \"" + *name +
-                              "\" is not one of \"plane\", \"line\", \"bem\"");
+                              "\" is not one of \"plane\", \"line\", \"bem\", \"auto\"");
 }
 
 /// Each speed >= 0 and finite, and at most limits::speeds of them (as the command line).
@@ -205,12 +211,15 @@ void check_speeds(const std::vector<double>& speeds) {
   for (const double v : speeds) detail::require_non_negative("speed", v);
 }
 
-/// The method to use: the caller's, else the scene's, else the roller's natural one (a cylinder:
-/// plane; an ellipsoid: line).
+/// The method to use: the caller's, else the scene's, else the auto method; the auto method on a
+/// cylinder is the plane method, the only one it has (as viscoroll-solve's from_scene).
 Method method_for(const SceneSpec& scene, const std::optional<std::string>& method) {
-  if (auto m = parse_method(method)) return *m;
-  if (scene.method) return *scene.method;
-  return scene.roller.cylinder ? Method::plane : Method::line;
+  Method m = Method::automatic;
+  if (auto given = parse_method(method))
+    m = *given;
+  else if (scene.method)
+    m = *scene.method;
+  return m == Method::automatic && scene.roller.cylinder ? Method::plane : m;
 }
 
 cli::Method to_cli(Method m) {
@@ -228,10 +237,15 @@ cli::Method to_cli(Method m) {
 }
 
 /// The command line's checks of a scene against a method (the cylinder is the plane method's
-/// roller; the line method's slender contact; the bem method's c2/c1; the scene's own grid), and
-/// the discretisation: `grid` (the caller's) wins over the scene's.
+/// roller; the line method's slender contact; the bem method's c2/c1; the scene's own grid; no
+/// grid for the auto method), and the discretisation at `tolerance` (the bem's): `grid` (the
+/// caller's) wins over the scene's.
 int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid,
-                     bool fast = false) {
+                     bool fast = false, double tolerance = 0) {
+  if (grid && method == Method::automatic)
+    throw std::invalid_argument("viscoroll: grid = " + std::to_string(*grid) +
+                                " needs method 'line' or 'bem' (the auto method picks line or "
+                                "bem per result, each at its own default)");
   cli::Scene s;
   if (scene.material.prony) s.material = cli::PronyModel{};
   if (scene.roller.axial)
@@ -246,7 +260,29 @@ int check_for_method(const SceneSpec& scene, Method method, std::optional<long> 
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(reader_message(e.what()));
   }
-  return discretisation(method, grid ? grid : scene.grid, bool(scene.material.prony), fast);
+  return discretisation(method, grid ? grid : scene.grid, bool(scene.material.prony), fast,
+                        tolerance);
+}
+
+/// The bem method's relative tolerance in d and chi (BemOptions::tolerance, docs/theory.md
+/// section 17): the caller's `given`, else the scene's, else 0.01 unless a grid is given (the
+/// caller's or the scene's), which fixes it; as viscoroll-solve's bem_tolerance. `given` must be
+/// in BemOptions' range, with the bem or auto method.
+double tolerance_for(const SceneSpec& scene, std::optional<double> given, Method method,
+                     std::optional<long> grid) {
+  if (given) {
+    BemOptions options;
+    options.tolerance = *given;
+    options.validate();  // the library's range and message
+    if (method != Method::bem && method != Method::automatic)
+      throw std::invalid_argument(
+          std::string("viscoroll: tolerance is valid only with the bem or auto method, got "
+                      "method '") +
+          method_name(method) +
+          "' (the plane method is exact to rounding; the line method's error is its theory's)");
+  }
+  const std::optional<double> tolerance = given ? given : scene.tolerance;
+  return tolerance.value_or(grid || scene.grid ? 0.0 : 0.01);
 }
 
 std::optional<ShiftLaw<double>> shift_from_cli(const std::optional<cli::ShiftSpec>& shift) {
@@ -361,6 +397,9 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
   if (in.method) out.method = parse_method(std::string(cli::method_name(*in.method)));
   out.grid = in.grid;
   out.setting = in.setting;
+  out.tolerance = in.tolerance;
+  out.density = in.density;
+  out.strict = in.strict;
   out.description = in.description;
   out.source = source;
   return out;
@@ -450,19 +489,21 @@ py::array_t<double> as_array(const std::vector<double>& values) {
   return out;
 }
 
-/// The line method's setting: None or "default", or "fast" (LineOptions::fast(); the line method
-/// only). None with the line method: the scene file's "setting" (the other methods ignore it).
+/// The line method's setting: None or "default", or "fast" (LineOptions::fast(); the line and
+/// auto methods only). None with the line or auto method: the scene file's "setting" (the other
+/// methods ignore it).
 bool fast_setting(const SceneSpec& scene, const std::optional<std::string>& setting,
                   Method method) {
-  if (!setting) return method == Method::line && scene.setting == cli::LineSetting::fast;
+  const bool line = method == Method::line || method == Method::automatic;
+  if (!setting) return line && scene.setting == cli::LineSetting::fast;
   const auto named = cli::parse_line_setting(*setting);
   if (!named)
     throw std::invalid_argument("viscoroll: setting = '" + *setting +
                                 "' is not a setting: expected None, 'default' or 'fast'");
   if (*named == cli::LineSetting::standard) return false;
-  if (method != Method::line)
+  if (!line)
     throw std::invalid_argument(std::string("viscoroll: setting = 'fast' is valid only with the "
-                                            "line method, got method '") +
+                                            "line or auto method, got method '") +
                                 method_name(method) + "'");
   return true;
 }
@@ -523,9 +564,117 @@ T interruptible(std::function<T(const std::atomic<bool>&)> work, bool join_on_st
   return std::move(*state->result);
 }
 
+/// The record of a result not yet handed to Python, to amend (the auto method's reason, the
+/// validity warnings).
+Record& record_of(const SolvedPtr& solved) {
+  return std::const_pointer_cast<Solved>(solved)->record_;
+}
+
+/// `solved` with the field method_reason (cli::with_method_reason).
+SolvedPtr with_reason(SolvedPtr solved, const std::string& reason) {
+  Record& record = record_of(solved);
+  record = cli::with_method_reason(std::move(record), reason);
+  return solved;
+}
+
+/// What the validity checks need of the scene (cli/validity_record.hpp), as viscoroll-solve's
+/// validity_facts: the rolling radius, where the roller's body ends, the rubber's shear-wave
+/// speed where the scene gives a density.
+cli::ValidityFacts validity_facts(const SceneSpec& scene) {
+  cli::ValidityFacts facts;
+  facts.radius = rolling_radius(scene.roller);
+  std::tie(facts.body_min, facts.body_max) = roller_body(scene);
+  if (scene.density) {
+    const auto& m = scene.material;
+    const double c =
+        m.prony ? m.prony->reference.instantaneous_compliance()
+                : StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau).instantaneous_compliance();
+    facts.shear_wave_speed = cli::shear_wave_speed(c, m.nu, *scene.density);
+  }
+  return facts;
+}
+
+/// Why the line method does not apply to the scene before any solve (cli/auto_method.hpp: the
+/// ellipsoid's c2/c1, then line_precheck on the line theory's long-term contact), or empty.
+std::string auto_precheck(const SceneSpec& scene) {
+  std::string why = scene.roller.axial ? std::string()
+                                       : cli::ellipsoid_precheck(scene.roller.c1, scene.roller.c2);
+  if (why.empty()) {
+    const auto [a0, l0] = line_long_term(scene);
+    why = cli::line_precheck(a0, l0, validity_facts(scene));
+  }
+  return why;
+}
+
+/// The auto method's discretisations: the line method's default terms (its setting's), the bem's
+/// first grid at `tolerance`.
+int auto_terms(const SceneSpec& scene, bool fast) {
+  return discretisation(Method::line, std::nullopt, bool(scene.material.prony), fast);
+}
+int auto_grid(const SceneSpec& scene, double tolerance) {
+  return discretisation(Method::bem, std::nullopt, bool(scene.material.prony), false, tolerance);
+}
+
+/// The auto method at one speed, as viscoroll-solve's run_auto (cli/auto_method.hpp): the line
+/// method where its theory applies and its result stands, else the bem method at `tolerance`;
+/// the plane method for a cylinder. `start` seeds the method it is a result of.
+SolvedPtr solve_auto(const SceneSpec& scene, double speed, bool fast, double tolerance,
+                     const Solved* start) {
+  if (start && start->method() == Method::plane)
+    throw std::invalid_argument(
+        "viscoroll: start must be a result of the line or bem method for the auto method, got "
+        "plane");
+  const auto seed = [&](Method m) { return start && start->method() == m ? start : nullptr; };
+  if (scene.roller.cylinder) return with_reason(solve_plane(scene, speed), cli::plane_cylinder());
+  const auto bem = [&](const std::string& why) {
+    return with_reason(
+        solve_bem(scene, speed, auto_grid(scene, tolerance), tolerance, seed(Method::bem)),
+        cli::bem_instead(why));
+  };
+  if (const std::string why = auto_precheck(scene); !why.empty()) return bem(why);
+  SolvedPtr line = solve_line(scene, speed, auto_terms(scene, fast), fast, seed(Method::line));
+  const std::string rejected = cli::line_rejection(line->record(), validity_facts(scene));
+  if (rejected.empty()) return with_reason(std::move(line), cli::line_accepted());
+  return bem(rejected);
+}
+
+/// The auto method over `speeds`, as viscoroll-solve's run_auto: the line sweep, and the bem
+/// sweep of every speed when the line method cannot answer for one of them (or for none before
+/// any solve); each speed's result is its line result where it stands, else its bem result.
+std::vector<SolvedPtr> sweep_auto(const SceneSpec& scene, std::span<const double> speeds, bool fast,
+                                  double tolerance, const SweepOptions& options) {
+  const auto reasoned = [](std::vector<SolvedPtr> solved, const auto& reason_of) {
+    for (std::size_t k = 0; k < solved.size(); ++k)
+      solved[k] = with_reason(std::move(solved[k]), reason_of(k));
+    return solved;
+  };
+  if (scene.roller.cylinder)
+    return reasoned(sweep_plane(scene, speeds, options),
+                    [](std::size_t) { return cli::plane_cylinder(); });
+  const auto bems = [&] {
+    return sweep_bem(scene, speeds, auto_grid(scene, tolerance), tolerance, options);
+  };
+  if (const std::string why = auto_precheck(scene); !why.empty())
+    return reasoned(bems(), [&](std::size_t) { return cli::bem_instead(why); });
+  std::vector<SolvedPtr> lines = sweep_line(scene, speeds, auto_terms(scene, fast), fast, options);
+  if (options.stop && *options.stop) return lines;  // interrupted: dropped by the caller
+  const auto facts = validity_facts(scene);
+  std::vector<std::string> rejected;
+  for (const auto& r : lines) rejected.push_back(cli::line_rejection(r->record(), facts));
+  std::vector<SolvedPtr> others;
+  if (std::any_of(rejected.begin(), rejected.end(), [](const auto& w) { return !w.empty(); }))
+    others = bems();
+  if (options.stop && *options.stop) return lines;
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    lines[k] = rejected[k].empty()
+                   ? with_reason(std::move(lines[k]), cli::line_accepted())
+                   : with_reason(std::move(others[k]), cli::bem_instead(rejected[k]));
+  return lines;
+}
+
 SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid, double speed,
-                      bool fast, const Result* start) {
-  const int n = check_for_method(scene, method, grid, fast);
+                      bool fast, double tolerance, const Result* start) {
+  const int n = check_for_method(scene, method, grid, fast, tolerance);
   const Solved* seed = start ? start->solved.get() : nullptr;
   switch (method) {
     case Method::plane:
@@ -533,45 +682,138 @@ SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long>
     case Method::line:
       return solve_line(scene, speed, n, fast, seed);
     case Method::bem:
-      return solve_bem(scene, speed, n, seed);
+      return solve_bem(scene, speed, n, tolerance, seed);
     case Method::automatic:
-      break;
+      return solve_auto(scene, speed, fast, tolerance, seed);
   }
   throw std::logic_error("viscoroll: unknown method");
 }
 
+/// "<method> solution for tau = T, speed = V" (temperature = T for a Prony material with a shift
+/// law), as viscoroll-solve names a result in its messages.
+std::string record_label(const Solved& solved) {
+  const auto real = [&](const char* key) {
+    const Value* v = solved.find(key);
+    return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
+  };
+  const Value* method = solved.find("method");
+  std::string out =
+      (method ? std::get<std::string>(*method) : std::string("the")) + " solution for ";
+  const double t = real("temperature"), tau = real("tau");
+  if (!std::isnan(t))
+    out += "temperature = " + shortest(t) + ", ";
+  else if (!std::isnan(tau))
+    out += "tau = " + shortest(tau) + ", ";
+  return out + "speed = " + shortest(real("speed"));
+}
+
+/// The model's validity checks (core/validity.hpp) on every result, as viscoroll-solve's: each
+/// breach joins the result's warnings (cli::add_validity_warnings) and is returned as a message
+/// naming the result, for Python's warnings; with `strict` the first breach is a ValueError.
+std::vector<std::string> check_validity(const std::vector<SolvedPtr>& solved,
+                                        const SceneSpec& scene, bool strict) {
+  const cli::ValidityFacts facts = validity_facts(scene);
+  std::vector<std::string> messages;
+  // The scene's long-term static contact (cli::scene_breaches), on every result, once among the
+  // messages; a line result that did not converge on an end-loaded roller says so
+  // (cli::add_end_hint).
+  const auto& m = scene.material;
+  const double compliance =
+      m.prony ? m.prony->reference.long_term_compliance()
+              : StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau).long_term_compliance();
+  const auto [a0, l0] =
+      scene.roller.cylinder
+          ? std::pair{std::sqrt(4 * compliance * scene.load / scene.roller.c1), std::nan("")}
+          : line_long_term(scene);
+  const auto scene_wide = cli::scene_breaches(facts, a0, scene.roller.axial ? l0 : std::nan(""),
+                                              compliance, scene.load, scene.roller.c1);
+  if (strict && !scene_wide.empty())
+    throw std::invalid_argument("viscoroll: strict: the scene: " + scene_wide.front() +
+                                " (without strict this is a warning; docs/errors.md, \"Validity "
+                                "checks\")");
+  for (const auto& b : scene_wide) messages.push_back("viscoroll: the scene: " + b);
+  for (const auto& r : solved) {
+    Record& record = record_of(r);
+    if (r->method() == Method::line) cli::add_end_hint(record, facts);
+    if (scene_wide.empty()) continue;
+    for (auto& [key, value] : record)
+      if (key == "warnings")
+        if (auto* list = std::get_if<std::vector<std::string>>(&value))
+          list->insert(list->begin(), scene_wide.begin(), scene_wide.end());
+  }
+  for (const auto& r : solved)
+    for (const auto& breach : cli::add_validity_warnings(record_of(r), facts)) {
+      if (strict)
+        throw std::invalid_argument("viscoroll: strict: " + record_label(*r) + ": " + breach +
+                                    " (without strict this is a warning; docs/errors.md, "
+                                    "\"Validity checks\")");
+      messages.push_back("viscoroll: " + record_label(*r) + ": " + breach);
+    }
+  return messages;
+}
+
+/// Each message as a Python warning (UserWarning) at the caller of solve() or sweep().
+void warn(const std::vector<std::string>& messages) {
+  for (const auto& m : messages)
+    if (PyErr_WarnEx(PyExc_UserWarning, m.c_str(), 2) != 0) throw py::error_already_set();
+}
+
 /// The sweep's fields as NumPy arrays (numbers float64, counts int64, flags bool) and lists
-/// (reason, warnings), in the command line's order; `method` is left out (it is the argument).
-py::dict to_columns(const std::vector<SolvedPtr>& solved) {
+/// (reason, warnings), in the command line's order; `method` only with the auto method (else it
+/// is the argument). A field some results lack (the auto method's line and bem results) is a
+/// float64 array with nan where missing (a list: None).
+py::dict to_columns(const std::vector<SolvedPtr>& solved, bool with_method) {
   py::dict out;
   if (solved.empty()) return out;
   const std::size_t n = solved.size();
-  for (const auto& [key, first] : solved.front()->record()) {
-    if (key == "method") continue;
-    auto value_at = [&, name = key](std::size_t i) -> const Value& {
-      const Value* v = solved[i]->find(name);
-      if (!v) throw std::logic_error("viscoroll: field " + name + " missing");
-      return *v;
+  // Every result's keys, each after the key before it in the first result that has it.
+  std::vector<std::string> keys;
+  for (const auto& r : solved) {
+    std::size_t at = 0;
+    for (const auto& [key, value] : r->record()) {
+      const auto it = std::find(keys.begin(), keys.end(), key);
+      if (it != keys.end())
+        at = static_cast<std::size_t>(it - keys.begin()) + 1;
+      else
+        keys.insert(keys.begin() + static_cast<std::ptrdiff_t>(at++), key);
+    }
+  }
+  for (const auto& key : keys) {
+    if (key == "method" && !with_method) continue;
+    std::vector<const Value*> values(n);
+    bool complete = true;
+    const Value* first = nullptr;
+    for (std::size_t i = 0; i < n; ++i) {
+      values[i] = solved[i]->find(key);
+      if (!first) first = values[i];
+      complete = complete && values[i] && values[i]->index() == first->index();
+    }
+    const auto number = [](const Value* v) {
+      if (const auto* x = std::get_if<double>(v)) return *x;
+      if (const auto* c = std::get_if<long long>(v)) return static_cast<double>(*c);
+      if (const auto* b = std::get_if<bool>(v)) return *b ? 1.0 : 0.0;
+      return std::nan("");
     };
-    if (std::holds_alternative<double>(first)) {
-      py::array_t<double> column(static_cast<py::ssize_t>(n));
-      auto* data = column.mutable_data();
-      for (std::size_t i = 0; i < n; ++i) data[i] = std::get<double>(value_at(i));
+    if (std::holds_alternative<std::string>(*first) ||
+        std::holds_alternative<std::vector<std::string>>(*first)) {
+      py::list column;
+      for (const Value* v : values) column.append(v ? to_python(*v) : py::none());
       out[py::str(key)] = column;
-    } else if (std::holds_alternative<long long>(first)) {
+    } else if (complete && std::holds_alternative<long long>(*first)) {
       py::array_t<std::int64_t> column(static_cast<py::ssize_t>(n));
       auto* data = column.mutable_data();
       for (std::size_t i = 0; i < n; ++i)
-        data[i] = static_cast<std::int64_t>(std::get<long long>(value_at(i)));
+        data[i] = static_cast<std::int64_t>(std::get<long long>(*values[i]));
       out[py::str(key)] = column;
-    } else if (std::holds_alternative<bool>(first)) {
+    } else if (complete && std::holds_alternative<bool>(*first)) {
       py::array_t<bool> column(static_cast<py::ssize_t>(n));
       auto* data = column.mutable_data();
-      for (std::size_t i = 0; i < n; ++i) data[i] = std::get<bool>(value_at(i));
+      for (std::size_t i = 0; i < n; ++i) data[i] = std::get<bool>(*values[i]);
       out[py::str(key)] = column;
     } else {
-      py::list column;
-      for (std::size_t i = 0; i < n; ++i) column.append(to_python(value_at(i)));
+      py::array_t<double> column(static_cast<py::ssize_t>(n));
+      auto* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) data[i] = values[i] ? number(values[i]) : std::nan("");
       out[py::str(key)] = column;
     }
   }
@@ -581,7 +823,9 @@ py::dict to_columns(const std::vector<SolvedPtr>& solved) {
 /// The docstrings of the result's fields (the command line's JSON fields, docs/cli.md).
 const std::vector<std::pair<const char*, const char*>>& field_docs() {
   static const std::vector<std::pair<const char*, const char*>> docs = {
-      {"method", "'plane', 'line' or 'bem'."},
+      {"method", "'plane', 'line' or 'bem': the method that answered."},
+      {"method_reason",
+       "The auto method: why its method answered ('auto: line (...)', 'auto: bem (...)')."},
       {"tau", "Relaxation time (0 for an elastic material); not with a Prony material."},
       {"temperature", "Prony material: the temperature (degrees Celsius; nan without a shift)."},
       {"a_T", "Prony material: the shift factor a_T at that temperature (1 at t_ref)."},
@@ -627,10 +871,24 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"residual", "Final residual (nan where undefined)."},
       {"terms", "line: Chebyshev terms of ln a(y) (the grid argument)."},
       {"gmres_iterations", "bem: Krylov iterations over all active-set iterations."},
-      {"grid", "bem: elements per semi-axis of the static long-term Hertz ellipse."},
+      {"grid",
+       "bem: elements per semi-axis of the static long-term Hertz ellipse, of the grid that "
+       "answered."},
       {"cells", "bem: cells of the grid."},
+      {"tolerance", "bem: the relative tolerance asked in d and chi (0: one grid, no estimate)."},
+      {"tolerance_met", "bem: the error estimates of d and chi met the tolerance."},
+      {"error_d",
+       "bem with a tolerance: the estimated discretisation error of d, in d's units (nan where "
+       "not estimated: a grid resolved the contact alone)."},
+      {"error_chi", "bem with a tolerance: the estimated error of chi (absolute)."},
+      {"error_a0", "bem with a tolerance: the estimated error of a0 (absolute)."},
+      {"error_b0", "bem with a tolerance: the estimated error of b0 (absolute)."},
+      {"error_l", "bem with a tolerance: the estimated error of l (absolute)."},
+      {"error_pmax", "bem with a tolerance: the estimated error of pmax (absolute)."},
       {"reason", "line, bem: why the iteration stopped."},
-      {"warnings", "line, bem: domain-of-validity warnings (a list of str)."},
+      {"warnings",
+       "The solver's warnings and the model's validity checks that the result breaches (a list "
+       "of str)."},
   };
   return docs;
 }
@@ -737,7 +995,8 @@ py::object roller_object(const RollerSpec& r) {
 }
 
 constexpr const char* solve_doc = R"doc(
-solve(scene, method=None, grid=None, speed=None, start=None, setting=None) -> Result
+solve(scene, method=None, grid=None, speed=None, start=None, setting=None, tolerance=None,
+      strict=None) -> Result
 
 Solve one scene at one speed.
 
@@ -745,17 +1004,22 @@ Parameters
 ----------
 scene : Scene
     Material, roller, load (line, bem: total load; plane: load per unit length) and speeds.
-method : {"line", "plane", "bem"}, optional
+method : {"auto", "line", "plane", "bem"}, optional
     "line": the paper's 3-D line-contact theory (an Ellipsoid with c2 < 8 e^-3 c1, or a
     roller of finite length: Crowned, Logarithmic, Table);
     "plane": Hunter's plane problem of a cylinder (an Ellipsoid's c2 is ignored);
     "bem": the exact 3-D boundary-element reference (an Ellipsoid or a roller of finite
-    length, tilted or not). Default: the scene's method (a scene
-    file's "method"), else "plane" for a Cylinder and "line" for an Ellipsoid.
+    length, tilted or not), to `tolerance`;
+    "auto": the line method where its theory applies (a slender long-term contact inside the
+    roller) and its result stands (converged to a root, no warning, slender, inside the
+    roller), else the bem method; the plane method for a Cylinder. Its result's method is the
+    one that answered, and method_reason says why.
+    Default: the scene's method (a scene file's "method"), else "auto".
 grid : int, optional
     Discretisation, as viscoroll-solve --grid: line, Chebyshev terms of ln a(y), 1..64
     (default 6; 4 for a Prony material); bem, elements per semi-axis of the static long-term
-    Hertz ellipse, 2..512 (default 16); ignored by plane. Default: the scene's grid, else those defaults.
+    Hertz ellipse, 2..512 (default 16 on one grid; with a tolerance the first grid, default
+    8); ignored by plane; not with "auto". Default: the scene's grid, else those defaults.
 speed : float, optional
     Rolling speed >= 0. Default: the scene's only speed (a ValueError if it has none or
     several; use sweep() for several).
@@ -767,8 +1031,21 @@ setting : {"default", "fast"}, optional
     grid is given, integrals to 1e-4, loose intermediate stages) on 6-point panels: within 1%
     of the converged solution in a(0), b(0), l, d and chi on the paper's scene at
     V tau/a0 = 1e-3 ... 1e3, about 1 ms a solve (docs/performance.md, "The fast setting").
-    A Prony material keeps its 4 terms and 12-point panels. Default (None): the scene file's
-    "setting" with the line method, else "default".
+    A Prony material keeps its 4 terms and 12-point panels. Also the auto method's line
+    solves. Default (None): the scene file's "setting" with the line or auto method, else
+    "default".
+tolerance : float, optional
+    bem and auto: the relative accuracy asked in d and chi, 0 (one grid, no estimate) or
+    1e-4..0.5. The bem refines its grid (doubling it from `grid`, up to 128) until its error
+    estimates of d and chi (error_d, error_chi) are within it; tolerance_met says whether
+    they are. Default: the scene's tolerance, else 0.01 unless a grid is given (the call's
+    or the scene's), which solves on that one grid.
+strict : bool, optional
+    True: a result that breaches its model's assumptions (small slopes a0/R <= 0.2, a contact
+    inside the roller, the line theory's slenderness, quasi-static rolling where the scene
+    gives a density; docs/errors.md, "Validity checks") raises ValueError. False: each breach
+    is a warning (in the result's warnings, and a Python UserWarning). Default: the scene's
+    strict, else False.
 
 Returns
 -------
@@ -779,21 +1056,22 @@ Result
 Raises
 ------
 ValueError
-    Invalid input, with the library's message naming the parameter. A solve that does not
-    converge raises nothing: its result has converged == False and a reason.
+    Invalid input, with the library's message naming the parameter; with strict, a breach of
+    the model's assumptions. A solve that does not converge raises nothing: its result has
+    converged == False and a reason.
 
 Example
 -------
 >>> import viscoroll as vr
->>> scene = vr.Scene(material=vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0),
-...                  roller=vr.Ellipsoid(c1=1.0, c2=0.0798), load=0.0582)
+>>> scene = vr.Scene(material=vr.StandardLinearSolid(mu_d=3.0e6, nu=0.5, f=9.0, tau=0.01),
+...                  roller=vr.Ellipsoid(c1=20.0, c2=1.596582), load=20.0)
 >>> r = vr.solve(scene, speed=1.0)
->>> r.converged, r.a0, r.chi
+>>> r.method, r.method_reason, r.converged, r.a0, r.chi
 )doc";
 
 constexpr const char* sweep_doc = R"doc(
 sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16, with_results=False,
-      setting=None) -> dict
+      setting=None, tolerance=None, strict=None) -> dict
 
 Solve one scene over many speeds on several threads (viscoroll::sweep).
 
@@ -808,7 +1086,8 @@ Parameters
 scene : Scene
 speeds : sequence of float, optional
     Speeds >= 0, solved in this order; default the scene's speeds.
-method, grid, setting : as for solve().
+method, grid, setting, tolerance, strict : as for solve(). The auto method sweeps the line
+    method, and the bem method over every speed when a line result cannot answer for one.
 threads : int, optional
     Worker threads, 0..4096; None or 0: every core (std::thread::hardware_concurrency()).
 chunk : int, optional
@@ -821,7 +1100,9 @@ Returns
 dict
     One entry per output field of solve() except "method", in the command line's order:
     numbers as float64 arrays, counts (iterations, terms, ...) as int64 arrays, converged
-    (and, line, root) as bool arrays, reason (str) and warnings (list of str) as lists.
+    (and, line, root) as bool arrays, reason (str) and warnings (list of str) as lists. The
+    auto method adds "method" and "method_reason" (lists of str); a field that some of its
+    results lack (line's root, bem's grid) is a float64 array with nan there (a list: None).
     Non-convergence is per speed: check converged. with_results=True adds "results", the
     list of Result objects (for pressure(x, y), a(y), ... at each speed, or as start= of
     solve()).
@@ -829,7 +1110,8 @@ dict
 Raises
 ------
 ValueError
-    Invalid input (checked before any solve), with the library's message.
+    Invalid input (checked before any solve), with the library's message; with strict, a
+    breach of the model's assumptions (after the solves).
 )doc";
 
 }  // namespace
@@ -1089,16 +1371,19 @@ PYBIND11_MODULE(_viscoroll, m) {
   // Scene.
   py::class_<SceneSpec>(
       m, "Scene",
-      "Scene(material, roller, load, speeds=None, temperature=None)\n\n"
+      "Scene(material, roller, load, speeds=None, temperature=None, density=None)\n\n"
       "One problem: a material (StandardLinearSolid, Elastic or Prony), a roller (Ellipsoid,\n"
       "Cylinder, Crowned, Logarithmic or Table), the load (> 0; total for line and bem, per unit "
       "length for plane) and\n"
       "optionally the speeds (each >= 0) for sweep() and solve(). Any consistent units.\n"
       "temperature (degrees Celsius): a Prony material with a shift law is solved there (every\n"
       "time of its spectrum times a_T); default the law's t_ref.\n"
+      "density (> 0; kg/m^3 with SI units): the rubber's, for the check that rolling is\n"
+      "quasi-static (V at most 0.1 of the shear-wave speed); None: not checked.\n"
       "Scene.from_json(path) reads a scene file of the command line (docs/cli.md).")
       .def(py::init([](const vp::Material& material, const vp::Roller& roller, double load,
-                       const std::optional<py::object>& speeds, std::optional<double> temperature) {
+                       const std::optional<py::object>& speeds, std::optional<double> temperature,
+                       std::optional<double> density) {
              SceneSpec s;
              s.material = material.spec;
              s.roller = roller.spec;
@@ -1107,10 +1392,12 @@ PYBIND11_MODULE(_viscoroll, m) {
              if (speeds && !speeds->is_none()) s.speeds = as_vector(*speeds, "speeds");
              check_speeds(s.speeds);
              set_temperature(s, temperature);
+             if (density) viscoroll::detail::require_positive("density", *density);
+             s.density = density;
              return s;
            }),
            py::arg("material"), py::arg("roller"), py::arg("load"), py::arg("speeds") = py::none(),
-           py::arg("temperature") = py::none())
+           py::arg("temperature") = py::none(), py::arg("density") = py::none())
       .def_static(
           "from_json",
           [](const py::object& path, std::optional<double> temperature) {
@@ -1140,7 +1427,8 @@ PYBIND11_MODULE(_viscoroll, m) {
           py::arg("path"), py::arg("temperature") = py::none(),
           "Scene.from_json(path, temperature=None) -> Scene\n\n"
           "Read a scene file (JSON, SI units; docs/cli.md) with the command line's reader.\n"
-          "Its method, grid and setting become the defaults of solve() and sweep(). A prony\n"
+          "Its method, grid, setting, tolerance and strict become the defaults of solve() and\n"
+          "sweep(); its density is the scene's. A prony\n"
           "material (its terms, or the fit of its DMA file: a poor fit is a warning) is solved at\n"
           "`temperature` (degrees Celsius), else at the file's one temperature, else at its shift\n"
           "law's t_ref. Raises ValueError naming the file and the key with its path, e.g.\n"
@@ -1182,6 +1470,23 @@ PYBIND11_MODULE(_viscoroll, m) {
             return py::str(viscoroll::cli::line_setting_name(*s.setting));
           },
           "The scene file's setting (\"default\" or \"fast\", the line method's), or None.")
+      .def_property_readonly(
+          "tolerance",
+          [](const SceneSpec& s) -> py::object {
+            if (!s.tolerance) return py::none();
+            return py::float_(*s.tolerance);
+          },
+          "The scene file's tolerance (the bem method's, relative in d and chi), or None.")
+      .def_property_readonly(
+          "density",
+          [](const SceneSpec& s) -> py::object {
+            if (!s.density) return py::none();
+            return py::float_(*s.density);
+          },
+          "The rubber's density (the quasi-static check), or None.")
+      .def_readonly("strict", &SceneSpec::strict,
+                    "The scene file's strict: a validity breach is an error in solve() and "
+                    "sweep().")
       .def_readonly("description", &SceneSpec::description, "The scene file's description.")
       .def("__repr__", [](const SceneSpec& s) {
         std::string out = "Scene(material=" + material_repr(s.material) +
@@ -1192,6 +1497,9 @@ PYBIND11_MODULE(_viscoroll, m) {
         out += "]";
         if (s.method) out += std::string(", method='") + method_name(*s.method) + "'";
         if (s.grid) out += ", grid=" + std::to_string(*s.grid);
+        if (s.tolerance) out += ", tolerance=" + shortest(*s.tolerance);
+        if (s.density) out += ", density=" + shortest(*s.density);
+        if (s.strict) out += ", strict=True";
         if (s.material.prony && !std::isnan(s.temperature))
           out += ", temperature=" + shortest(s.temperature);
         return out + ")";
@@ -1286,9 +1594,11 @@ PYBIND11_MODULE(_viscoroll, m) {
       "solve",
       [](const SceneSpec& scene, const std::optional<std::string>& method, std::optional<long> grid,
          std::optional<double> speed, const Result* start,
-         const std::optional<std::string>& setting) {
+         const std::optional<std::string>& setting, std::optional<double> tolerance,
+         std::optional<bool> strict) {
         const Method which = method_for(scene, method);
         const bool fast = fast_setting(scene, setting, which);
+        const double tol = tolerance_for(scene, tolerance, which, grid);
         double v = 0;
         if (speed) {
           v = *speed;
@@ -1301,42 +1611,45 @@ PYBIND11_MODULE(_viscoroll, m) {
         }
         viscoroll::detail::require_non_negative("speed", v);
         SolvedPtr solved;
-        if (which == Method::bem) {
+        if (which == Method::bem || which == Method::automatic) {
           // A bem solve can take minutes and cannot be stopped: Ctrl-C is answered at once and
           // the solve ends in the background, on copies of its inputs.
           solved = interruptible<SolvedPtr>(
-              [scene, which, grid, v, fast,
+              [scene, which, grid, v, fast, tol,
                seed = start ? std::optional(*start) : std::nullopt](const std::atomic<bool>&) {
-                return solve_scene(scene, which, grid, v, fast, seed ? &*seed : nullptr);
+                return solve_scene(scene, which, grid, v, fast, tol, seed ? &*seed : nullptr);
               },
               false);
         } else {
           // The plane and line methods take milliseconds (a line spectrum on a roller profile up
           // to half a second): Python's handlers run when they return.
           py::gil_scoped_release release;
-          solved = solve_scene(scene, which, grid, v, fast, start);
+          solved = solve_scene(scene, which, grid, v, fast, tol, start);
         }
+        warn(check_validity({solved}, scene, strict.value_or(scene.strict)));
         return Result{std::move(solved)};
       },
       py::arg("scene"), py::arg("method") = py::none(), py::arg("grid") = py::none(),
       py::arg("speed") = py::none(), py::arg("start") = py::none(), py::arg("setting") = py::none(),
-      solve_doc);
+      py::arg("tolerance") = py::none(), py::arg("strict") = py::none(), solve_doc);
 
   m.def(
       "sweep",
       [](const SceneSpec& scene, const std::optional<py::object>& speeds,
          const std::optional<std::string>& method, std::optional<long> grid,
          std::optional<long> threads, long chunk, bool with_results,
-         const std::optional<std::string>& setting) {
+         const std::optional<std::string>& setting, std::optional<double> tolerance,
+         std::optional<bool> strict) {
         const Method which = method_for(scene, method);
         const bool fast = fast_setting(scene, setting, which);
+        const double tol = tolerance_for(scene, tolerance, which, grid);
         std::vector<double> v =
             speeds && !speeds->is_none() ? as_vector(*speeds, "speeds") : scene.speeds;
         if (v.empty())
           throw std::invalid_argument(
               "viscoroll: sweep() needs at least one speed: give speeds= or a scene with speeds");
         check_speeds(v);
-        const int n = check_for_method(scene, which, grid, fast);
+        const int n = check_for_method(scene, which, grid, fast, tol);
         viscoroll::SweepOptions options;
         const long t = threads.value_or(0);
         viscoroll::detail::require(t >= 0 && t <= 4096, "threads", t,
@@ -1356,14 +1669,21 @@ PYBIND11_MODULE(_viscoroll, m) {
                 case Method::line:
                   return sweep_line(scene, v, n, fast, stoppable);
                 case Method::bem:
-                  return sweep_bem(scene, v, n, stoppable);
+                  return sweep_bem(scene, v, n, tol, stoppable);
                 case Method::automatic:
-                  break;
+                  return sweep_auto(scene, v, fast, tol, stoppable);
               }
               throw std::logic_error("viscoroll: unknown method");
             },
             true);
-        py::dict out = to_columns(solved);
+        // One Python warning for the sweep (a sweep may have thousands of results).
+        std::vector<std::string> breaches =
+            check_validity(solved, scene, strict.value_or(scene.strict));
+        if (breaches.size() > 1)
+          breaches = {breaches.front() + " (and " + std::to_string(breaches.size() - 1) +
+                      " more breaches in this sweep: see its warnings)"};
+        warn(breaches);
+        py::dict out = to_columns(solved, which == Method::automatic);
         if (with_results) {
           py::list results;
           for (auto& r : solved) results.append(py::cast(Result{std::move(r)}));
@@ -1374,5 +1694,6 @@ PYBIND11_MODULE(_viscoroll, m) {
       py::arg("scene"), py::arg("speeds") = py::none(), py::arg("method") = py::none(),
       py::arg("grid") = py::none(), py::arg("threads") = py::none(),
       py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
-      py::arg("with_results") = false, py::arg("setting") = py::none(), sweep_doc);
+      py::arg("with_results") = false, py::arg("setting") = py::none(),
+      py::arg("tolerance") = py::none(), py::arg("strict") = py::none(), sweep_doc);
 }

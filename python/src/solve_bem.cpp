@@ -2,7 +2,9 @@
 // standard linear solid (BemSolverD) or a Prony series (BemSolver over PronyRelaxation), for the
 // ellipsoid or a roller of finite length (tilted or not; its scene from bem_scene, as the command
 // line's). The fields are those of viscoroll-solve --method bem (cli/bem_record.hpp).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -28,19 +30,21 @@ static_assert(std::is_same_v<SpectrumSolver::Solution, Solution>);
 struct BemKeys {
   RecordKeys record;
   std::optional<cli::LongTermContact> long_term;
+  double tolerance = 0;  ///< BemOptions::tolerance of the solver
 };
 
 class BemSolved final : public Solved {
  public:
-  /// `grid`: the solver's one grid (Python solves the bem on one grid: tolerance 0); the record's
-  /// grid is the solution's, the same.
+  /// `grid`: the solver's first grid; the record's grid is the one that answered (the
+  /// solution's), and its tolerance the solver's (keys.tolerance).
   BemSolved(Solution s, const BemKeys& keys, double speed, [[maybe_unused]] int grid,
             double seconds)
       : Solved(Method::bem), s_(std::move(s)) {
-    record_ = joined(keys.record.head("bem", speed),
-                     cli::bem_fields<Record>(
-                         s_, s_.along_roller(), keys.long_term.value_or(cli::hertz_long_term(s_)),
-                         keys.long_term.has_value(), keys.record.duty(speed), 0.0, seconds));
+    record_ =
+        joined(keys.record.head("bem", speed),
+               cli::bem_fields<Record>(
+                   s_, s_.along_roller(), keys.long_term.value_or(cli::hertz_long_term(s_)),
+                   keys.long_term.has_value(), keys.record.duty(speed), keys.tolerance, seconds));
   }
 
   const Solution& solution() const { return s_; }
@@ -73,18 +77,22 @@ StandardLinearSolid<double> material_of(const SceneSpec& scene) {
   return {m.mu_d, m.nu, m.f, m.tau};
 }
 
-BemOptions options_for(int grid) {
+/// The options of a solve from `grid` at `tolerance`, as viscoroll-solve's run_bem: with a
+/// tolerance the refinement may go up to at least the first grid.
+BemOptions options_for(int grid, double tolerance) {
   BemOptions options;
   options.grid = grid;
+  options.tolerance = tolerance;
+  if (tolerance > 0) options.max_grid = std::max(options.max_grid, grid);
   return options;
 }
 
-Solver make_solver(const SceneSpec& scene, int grid) {
-  return Solver(material_of(scene), options_for(grid));
+Solver make_solver(const SceneSpec& scene, int grid, double tolerance) {
+  return Solver(material_of(scene), options_for(grid, tolerance));
 }
 
-SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int grid) {
-  return SpectrumSolver(prony_at(scene), options_for(grid));
+SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int grid, double tolerance) {
+  return SpectrumSolver(prony_at(scene), options_for(grid, tolerance));
 }
 
 /// f(profile) with the library profile of the scene's roller of finite length in its tilt.
@@ -116,8 +124,8 @@ BemScene<double> bem_scene_at(const SceneSpec& scene, double speed) {
 
 /// The record's keys, with the line theory's static long-term contact of a roller of finite
 /// length (cli::profile_long_term).
-BemKeys keys_of(const SceneSpec& scene) {
-  BemKeys keys{RecordKeys::of(scene), std::nullopt};
+BemKeys keys_of(const SceneSpec& scene, double tolerance) {
+  BemKeys keys{RecordKeys::of(scene), std::nullopt, tolerance};
   if (scene.roller.axial)
     keys.long_term = with_profile(scene, [&](const auto& roller) {
       return scene.material.prony
@@ -143,24 +151,47 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
   return true;
 }
 
-SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, const Solved* start) {
+SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, double tolerance,
+                    const Solved* start) {
   const BemScene<double> at = bem_scene_at(scene, speed);
-  const BemKeys keys = keys_of(scene);
+  const BemKeys keys = keys_of(scene, tolerance);
   if (scene.material.prony)
-    return solve_seeded<BemSolved>(make_spectrum_solver(scene, grid), at, Method::bem, start, keys,
-                                   grid);
-  return solve_seeded<BemSolved>(make_solver(scene, grid), at, Method::bem, start, keys, grid);
+    return solve_seeded<BemSolved>(make_spectrum_solver(scene, grid, tolerance), at, Method::bem,
+                                   start, keys, grid);
+  return solve_seeded<BemSolved>(make_solver(scene, grid, tolerance), at, Method::bem, start, keys,
+                                 grid);
 }
 
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
-                                 const SweepOptions& options) {
+                                 double tolerance, const SweepOptions& options) {
   for (const double v : speeds) bem_scene_at(scene, v);  // every speed checked before any work
   const BemScene<double> at = bem_scene_at(scene, 0.0);
-  const BemKeys keys = keys_of(scene);
+  const BemKeys keys = keys_of(scene, tolerance);
   if (scene.material.prony)
-    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid), at, speeds, keys, grid,
-                                   options);
-  return sweep_seeded<BemSolved>(make_solver(scene, grid), at, speeds, keys, grid, options);
+    return sweep_seeded<BemSolved>(make_spectrum_solver(scene, grid, tolerance), at, speeds, keys,
+                                   grid, options);
+  return sweep_seeded<BemSolved>(make_solver(scene, grid, tolerance), at, speeds, keys, grid,
+                                 options);
+}
+
+std::pair<double, double> line_long_term(const SceneSpec& scene) {
+  if (scene.roller.axial) {
+    const auto lt = keys_of(scene, 0.0).long_term.value();
+    return {lt.a, lt.l};
+  }
+  const double compliance = scene.material.prony
+                                ? scene.material.prony->reference.long_term_compliance()
+                                : material_of(scene).long_term_compliance();
+  const auto h = hertz_contact(scene.roller.c1, scene.roller.c2, compliance, scene.load);
+  return {h.a, h.b};
+}
+
+std::pair<double, double> roller_body(const SceneSpec& scene) {
+  if (!scene.roller.axial)
+    return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  return with_profile(scene, [](const auto& roller) {
+    return std::pair<double, double>(roller.y_min(), roller.y_max());
+  });
 }
 
 }  // namespace viscoroll::python

@@ -3,7 +3,8 @@
 Python bindings (pybind11, double precision) of the header-only C++ library viscoroll, which
 implements Panek & Kalker (1980): the 3-D line-contact theory of an ellipsoidal roller
 (method "line"), Hunter's plane problem of a cylinder ("plane") and an exact 3-D
-boundary-element reference ("bem").
+boundary-element reference ("bem"); "auto", the default, answers by the line method where its
+theory applies and its result stands, else by the bem method to 1% in d and chi.
 
 Materials
     StandardLinearSolid(mu_d=, nu=, f=, tau=), Elastic(mu=, nu=),
@@ -15,18 +16,22 @@ Rollers
     tilt=None), Logarithmic(radius=, length=, scale=, end_drop=None, tilt=None),
     Table(radius=, y=, h=, tilt=None), or Roller(profile="crowned", ...) with a scene file's keys
 Scenes
-    Scene(material=, roller=, load=, speeds=None, temperature=None), Scene.from_json(path,
-    temperature=None) (a scene file of the command line viscoroll-solve, docs/cli.md)
+    Scene(material=, roller=, load=, speeds=None, temperature=None, density=None),
+    Scene.from_json(path, temperature=None) (a scene file of the command line viscoroll-solve,
+    docs/cli.md)
 Solving
-    solve(scene, method=None, grid=None, speed=None, start=None, setting=None) -> Result
+    solve(scene, method=None, grid=None, speed=None, start=None, setting=None,
+          tolerance=None, strict=None) -> Result
     sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16,
-          with_results=False, setting=None) -> dict of arrays
+          with_results=False, setting=None, tolerance=None, strict=None) -> dict of arrays
     (setting="fast": the line method's fast setting, about 1 ms a solve, within 1% on the
-    paper's scene)
+    paper's scene; tolerance: the bem's relative accuracy in d and chi, default 0.01;
+    strict=True: a breach of the model's assumptions raises ValueError, else it is a warning)
 Results
     Result: the command line's output fields as attributes (a0, b0, l, d, chi,
     rolling_resistance, power_loss, energy_per_revolution, pmax, pmax_x, converged, root,
-    iterations, residual, reason, warnings, ...), as_dict(), and pressure(x, y), a(y), b(y),
+    iterations, residual, reason, warnings, method_reason, tolerance_met, error_d, error_chi,
+    ...), as_dict(), and pressure(x, y), a(y), b(y),
     f0(y) on NumPy arrays. chi is the rolling-resistance force over the load: F = chi W is
     rolling_resistance, P = chi W V power_loss.
 
@@ -37,12 +42,11 @@ roller, which travels towards +x; x is measured from its axis. Any consistent un
 Example
 -------
 >>> import numpy as np, viscoroll as vr
->>> mat = vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0)
->>> scene = vr.Scene(material=mat, roller=vr.Ellipsoid(c1=1.0, c2=0.0798),
-...                  load=5 / (3 * 10 * mat.instantaneous_compliance))
->>> r = vr.solve(scene, speed=1.0)              # the line method, 6 Chebyshev terms
->>> r.converged, r.a0, r.chi
->>> p = r.pressure(np.linspace(-1, 1, 5), 0.0)  # float64 array of shape (5,)
+>>> mat = vr.StandardLinearSolid(mu_d=3.0e6, nu=0.5, f=9.0, tau=0.01)   # SI units
+>>> scene = vr.Scene(material=mat, roller=vr.Ellipsoid(c1=20.0, c2=1.596582), load=20.0)
+>>> r = vr.solve(scene, speed=1.0)              # auto: here the line method, 6 Chebyshev terms
+>>> r.method, r.method_reason, r.converged, r.a0, r.chi
+>>> p = r.pressure(np.linspace(-0.005, 0.005, 5), 0.0)  # float64 array of shape (5,)
 >>> s = vr.sweep(scene, speeds=np.logspace(-3, 3, 61))   # all cores, GIL released
 >>> s["chi"].shape, s["converged"].all()
 
@@ -79,13 +83,16 @@ def _doc(function):
     return text
 
 
-def solve(scene, method=None, grid=None, speed=None, start=None, setting=None):
-    return _viscoroll.solve(scene, method, grid, speed, start, setting)
+def solve(scene, method=None, grid=None, speed=None, start=None, setting=None, tolerance=None,
+          strict=None):
+    return _viscoroll.solve(scene, method, grid, speed, start, setting, tolerance, strict)
 
 
 def sweep(scene, speeds=None, method=None, grid=None, threads=None,
-          chunk=_viscoroll.DEFAULT_CHUNK, with_results=False, setting=None):
-    return _viscoroll.sweep(scene, speeds, method, grid, threads, chunk, with_results, setting)
+          chunk=_viscoroll.DEFAULT_CHUNK, with_results=False, setting=None, tolerance=None,
+          strict=None):
+    return _viscoroll.sweep(scene, speeds, method, grid, threads, chunk, with_results, setting,
+                            tolerance, strict)
 
 
 solve.__doc__ = _doc(_viscoroll.solve)

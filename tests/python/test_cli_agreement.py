@@ -25,6 +25,7 @@ CASES = [
     ("crowned_roller_prony_line.json", None, None, None),  # the same roller on a prony spectrum
     ("crowned_roller_line.json", "bem", 8, [0, 2]),  # a roller of finite length, bem method
     ("crowned_roller_prony_line.json", "bem", 8, [1]),
+    ("crowned_roller_line.json", "bem", None, [1]),  # the bem at its default tolerance, 0.01
     ("press_roll.json", None, None, None),
 ]
 
@@ -208,3 +209,67 @@ def test_a_tilted_roller_matches_the_command_line_and_mirrors(viscoroll_solve, s
     assert ends[0.002][0] + ends[0.002][1] < 0  # the load moves to the side pressed harder
     assert abs(ends[0.002][0] + ends[-0.002][1]) < tolerance
     assert abs(ends[0.002][1] + ends[-0.002][0]) < tolerance
+
+
+def without_method(scene_path, tmp_path, **changes):
+    """The scene file with neither method nor grid (the auto method), and `changes`."""
+    document = json.loads(scene_path.read_text())
+    document.pop("method", None)
+    document.pop("grid", None)
+    document.update(changes)
+    path = tmp_path / ("auto_" + scene_path.name)
+    path.write_text(json.dumps(document))
+    return path
+
+
+# The paper's scene (the line method answers), the same rubber with c2 close to the line theory's
+# limit (a contact not slender: the bem at 1%), and a scene of the paper's dimensionless kind where
+# the line equations have no root at some speeds (each of those answered by the bem method).
+AUTO_SCENES = {
+    "paper": lambda scenes_dir, tmp_path: without_method(scenes_dir / "paper.json", tmp_path),
+    "short contact": lambda scenes_dir, tmp_path: without_method(
+        scenes_dir / "paper.json", tmp_path,
+        roller={"profile": "ellipsoid", "c1": 20.0, "c2": 6.0}, speeds=[0.01, 1.0]),
+}
+
+
+@pytest.mark.parametrize("name", list(AUTO_SCENES))
+def test_an_auto_scene_matches_the_command_line(viscoroll_solve, scenes_dir, tmp_path, name):
+    """No method in the file: the auto method in both, each result the command line's record
+    (method_reason included) at single speeds and in a sweep."""
+    path = AUTO_SCENES[name](scenes_dir, tmp_path)
+    scene = vr.Scene.from_json(path)
+    assert scene.method is None
+    speeds = scene.speeds[[0, 12, 24]] if len(scene.speeds) > 3 else scene.speeds
+    for v in speeds:
+        (expected,) = run_cli(viscoroll_solve, path, None, None, [v])
+        result = vr.solve(scene, speed=float(v))
+        assert expected["method"] == result.method and "method_reason" in expected
+        got = result.as_dict()
+        assert list(got) == list(expected), "the same fields in the same order"
+        compare(expected, got, f"auto {name} speed {v}")
+    expected = run_cli(viscoroll_solve, path, None, None, speeds)
+    compare_sweep(expected, vr.sweep(scene, speeds=speeds, threads=1), f"auto {name} sweep")
+
+
+def test_an_auto_sweep_of_both_methods_matches_the_command_line(viscoroll_solve, tmp_path):
+    """A sweep where the line method stands at some speeds and not at others (no root): the
+    command line's choice speed by speed, each result its record; the fields one method lacks are
+    nan in the sweep's columns."""
+    document = {"material": {"model": "standard_linear_solid", "mu_d": 1.0, "nu": 0.5, "f": 9.0,
+                             "tau": 1.0},
+                "roller": {"profile": "ellipsoid", "c1": 1.0, "c2": (math.log(20) - 1) / 25},
+                "load": 5 / (3 * 10 * (1 - 0.5) / (2 * math.pi)),
+                "speeds": [0.0257, 0.0326, 0.0412]}
+    path = tmp_path / "both.json"
+    path.write_text(json.dumps(document))
+    expected = run_cli(viscoroll_solve, path, None, None, document["speeds"])
+    assert {line["method"] for line in expected} == {"line", "bem"}
+    got = vr.sweep(vr.Scene.from_json(path), threads=1)
+    assert got["method"] == [line["method"] for line in expected]
+    for i, line in enumerate(expected):
+        row = {key: (value[i].item() if isinstance(value, np.ndarray) else value[i])
+               for key, value in got.items()}
+        compare(line, row, f"both speed[{i}]")
+        missing = set(row) - set(line)
+        assert all(row[key] is None or math.isnan(row[key]) for key in missing), missing

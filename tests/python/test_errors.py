@@ -44,12 +44,13 @@ def test_constructors_name_the_parameter(make, name):
 
 
 @pytest.mark.parametrize("call,name", [
-    (lambda: vr.solve(scene(roller=vr.Ellipsoid(c1=1.0, c2=0.5)), speed=1.0), "c2"),
+    (lambda: vr.solve(scene(roller=vr.Ellipsoid(c1=1.0, c2=0.5)), method="line", speed=1.0),
+     "c2"),
     (lambda: vr.solve(scene(roller=vr.Cylinder(radius=1.0)), method="line", speed=1.0),
      "cylinder"),
     (lambda: vr.solve(scene(), speed=-1.0), "speed"),
-    (lambda: vr.solve(scene(), speed=1.0, grid=0), "grid"),
-    (lambda: vr.solve(scene(), speed=1.0, grid=65), "grid"),
+    (lambda: vr.solve(scene(), method="line", speed=1.0, grid=0), "grid"),
+    (lambda: vr.solve(scene(), method="line", speed=1.0, grid=65), "grid"),
     (lambda: vr.solve(scene(), method="bem", speed=1.0, grid=1), "grid"),
     (lambda: vr.solve(scene(), method="spline", speed=1.0), "method"),
     (lambda: vr.solve(scene()), "speed"),

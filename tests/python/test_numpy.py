@@ -55,7 +55,7 @@ def test_the_peak(result):
 
 
 def test_sweep_columns():
-    s = vr.sweep(SCENE, threads=1)
+    s = vr.sweep(SCENE, method="line", threads=1)
     assert "method" not in s
     for key in ("tau", "speed", "vtau", "a0", "b0", "l", "d", "chi", "pmax", "pmax_x", "residual",
                 "seconds"):
@@ -69,7 +69,7 @@ def test_sweep_columns():
     assert np.array_equal(s["speed"], SCENE.speeds)
     plane = vr.sweep(SCENE, method="plane", speeds=np.array([0.5, 2.0]))
     assert plane["chi"].shape == (2,) and "l" not in plane and "reason" not in plane
-    with_results = vr.sweep(SCENE, threads=1, with_results=True)
+    with_results = vr.sweep(SCENE, method="line", threads=1, with_results=True)
     assert [r.chi for r in with_results["results"]] == list(s["chi"])
 
 
