@@ -24,12 +24,17 @@ def test_a_modulus_in_mpa_warns(method):
     assert r.a0 > 0.05
     breach = [w for w in r.warnings if w.startswith("a0 = ")]
     assert len(breach) == 1 and "is a modulus in MPa or GPa" in breach[0]
-    assert str(caught[0].message).endswith(breach[0])
+    assert any(str(w.message).endswith(breach[0]) for w in caught)
+    # The scene's long-term static contact is checked too, before any solve.
+    scene_wide = [w for w in r.warnings if w.startswith("its long-term static contact: a0 = ")]
+    assert len(scene_wide) == 1 and "is a modulus in MPa or GPa" in scene_wide[0]
+    assert any(str(w.message).startswith("viscoroll: the scene: its long-term") for w in caught)
 
 
 def test_a_modulus_in_mpa_with_strict_raises_naming_a0_and_the_radius():
-    with pytest.raises(ValueError, match=r"strict: .* solution for tau = 0.01, speed = 1: a0 = \S+ "
-                                         r"is \S+ times the roller radius 0.05") as error:
+    # The scene's long-term static contact breaches before any solve.
+    with pytest.raises(ValueError, match=r"strict: the scene: its long-term static contact: "
+                                         r"a0 = \S+ is \S+ times the roller radius 0.05") as error:
         vr.solve(paper(mu_d=3.0), speed=1.0, strict=True)
     assert "(without strict this is a warning" in str(error.value)
     with pytest.raises(ValueError, match="roller radius 0.05"):
@@ -45,7 +50,8 @@ def test_a_valid_scene_neither_warns_nor_raises():
 
 
 def test_a_sweep_warns_once_and_every_result_carries_its_breach():
-    with pytest.warns(UserWarning, match=r"and 2 more breaches in this sweep") as caught:
+    # Three results and the scene's long-term static contact: four breaches, one warning.
+    with pytest.warns(UserWarning, match=r"and 3 more breaches in this sweep") as caught:
         s = vr.sweep(paper(mu_d=3.0), speeds=[0.1, 1.0, 10.0], method="line", threads=1)
     assert len(caught) == 1
     assert all(any(w.startswith("a0 = ") for w in ws) for ws in s["warnings"])
