@@ -68,9 +68,10 @@ struct BemOptions {
   /// The accuracy asked of d and chi, relative (docs/theory.md, section 17): 0 solves once on
   /// `grid`; a tolerance in [1e-4, 0.5] solves on `grid`, 2 grid, 4 grid, ... elements up to
   /// `max_grid`, each grid after the first sized across by the contact the one before found,
-  /// until the estimated errors of d and of chi (BemErrorEstimate) are at most `tolerance` times
-  /// |d| and |chi| (chi's: or 1e-6 C1 a_H, a_H the long-term Hertz semi-axis, when |chi| is
-  /// below that), and returns the last grid's solution with the estimates
+  /// until, on the third converged grid or later, the estimated errors of d and of chi
+  /// (BemErrorEstimate) are at most `tolerance` times |d| and |chi| (chi's: or 1e-6 C1 a_H, a_H
+  /// the long-term Hertz semi-axis, when |chi| is below that), and returns the last grid's
+  /// solution with the estimates
   /// (BemSolution::error, tolerance_met; a warning when the tolerance is not met).
   double tolerance = 0;
   /// The largest grid of the refinement `tolerance` asks for (elements per semi-axis).
@@ -200,10 +201,10 @@ RowContact<Real> row_contact(const BemGrid<Real>& g, const std::vector<Real>& p,
 
 /// The estimated discretisation errors of a boundary-element solution refined to a tolerance
 /// (BemOptions::tolerance): each 5/4 of the change of its quantity from the grid before (cells
-/// at least twice as large), which bounds the error of an O(h^p), p >= 1, convergence with a
-/// margin (docs/theory.md, section 17, (E1)-(E2)); a0, b0 and l, edges located to a fraction of
-/// a cell (B12), add a quarter of the cell (hx, hy). Absolute, in the quantity's units; NaN
-/// where not estimated.
+/// at least twice as large), or of half the change before that when larger, which bounds the
+/// error of an O(h^p), p >= 1, convergence with a margin (docs/theory.md, section 17,
+/// (E1)-(E3)); a0, b0 and l, edges located to a fraction of a cell (B12), add a quarter of the
+/// cell (hx, hy). Absolute, in the quantity's units; NaN where not estimated.
 template <RealScalar Real>
 struct BemErrorEstimate {
   Real d = std::numeric_limits<Real>::quiet_NaN();
