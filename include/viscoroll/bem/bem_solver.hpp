@@ -583,7 +583,7 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
   double setup = 0, seconds = 0;
   std::optional<Solution> coarse, last;
   std::optional<BemErrorEstimate<Real>> before_change;  // the change between the two grids before
-  bool three_grids = false;  // the last estimate had three grids
+  bool three_grids = false;                             // the last estimate had three grids
   // The cells' semi-axis across: the long-term Hertz a_H, then the reach of the contact found on
   // the grid before, |x| + hx/2 of its farthest loaded cell, when that is less (the faster, the
   // narrower the contact: the glassy one is (1 + f)^(-1/3) a_H wide), so that hx at least halves.
@@ -646,9 +646,9 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
       out << Real(100) * x << "%";
       return out.str();
     };
-    const std::string estimates =
-        percent(sol.error.d / abs(sol.d), 2) + " in d, " +
-        percent(sol.error.chi / std::max(abs(sol.chi), chi_floor), 2) + " in chi";
+    const std::string estimates = percent(sol.error.d / abs(sol.d), 2) + " in d, " +
+                                  percent(sol.error.chi / std::max(abs(sol.chi), chi_floor), 2) +
+                                  " in chi";
     sol.warnings.push_back(
         !(boost::math::isfinite)(sol.error.d)
             ? "the tolerance " + percent(tol) + " is not verified: only the grid " +
@@ -658,8 +658,7 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
             ? "the tolerance " + percent(tol) +
                   " is not verified: it needs three grids and only two resolved the contact "
                   "up to the largest grid " +
-                  std::to_string(sol.elements) + " (max_grid; estimated errors " + estimates +
-                  ")"
+                  std::to_string(sol.elements) + " (max_grid; estimated errors " + estimates + ")"
             : "the tolerance " + percent(tol) + " is not met at the largest grid " +
                   std::to_string(sol.elements) + " (max_grid): estimated errors " + estimates);
   }
