@@ -282,28 +282,16 @@ class Output {
   /// result's warnings and stderr, or with `strict` makes the run an error (exit 2, nothing on
   /// stdout).
   void add(Record r) {
-    if (!scene_breaches_.empty()) {
-      // The scene's own breaches (scene_breaches): on every result, converged or not.
-      const Value* w = find(r, "warnings");
-      std::vector<std::string> list =
-          w ? std::get<std::vector<std::string>>(*w) : std::vector<std::string>{};
-      list.insert(list.begin(), scene_breaches_.begin(), scene_breaches_.end());
-      bool replaced = false;
-      for (auto& field : r)
-        if (field.key == "warnings") {
-          field.value = list;
-          replaced = true;
-        }
-      if (!replaced) r.push_back({"warnings", list});
-    }
+    // The scene's own breaches (scene_breaches): first, on every result, converged or not.
+    viscoroll::cli::add_warnings(r, scene_breaches_, true);
     if (facts_) {
       const auto breaches = viscoroll::cli::add_validity_warnings(r, *facts_);
       for (const auto& b : breaches) {
         if (strict_)
           throw std::invalid_argument(
-              "viscoroll-solve: --strict: " + record_label(r) + ": " + b +
+              "viscoroll-solve: --strict: " + viscoroll::cli::record_label(r) + ": " + b +
               " (without --strict this is a warning; docs/errors.md, \"Validity checks\")");
-        note("viscoroll-solve: warning: " + record_label(r) + ": " + b);
+        note("viscoroll-solve: warning: " + viscoroll::cli::record_label(r) + ": " + b);
       }
     }
     pending_.push_back(std::move(r));
@@ -312,10 +300,10 @@ class Output {
   void note_record(const Record& r) {
     if (const Value* w = find(r, "warnings"))
       for (const auto& text : std::get<std::vector<std::string>>(*w))
-        note("viscoroll-solve: warning: " + record_label(r) + ": " + text);
+        note("viscoroll-solve: warning: " + viscoroll::cli::record_label(r) + ": " + text);
     if (!converged_record(r)) {
       const Value* reason = find(r, "reason");
-      note("viscoroll-solve: " + record_label(r) + " did not converge" +
+      note("viscoroll-solve: " + viscoroll::cli::record_label(r) + " did not converge" +
            (reason ? ": " + std::get<std::string>(*reason) : std::string()));
     }
   }
@@ -524,20 +512,6 @@ class Output {
   std::optional<viscoroll::cli::ValidityFacts> facts_;
   bool strict_ = false;
   std::vector<std::string> scene_breaches_;
-
-  /// "<method> solution for tau = T, speed = V" (temperature = T for a prony material).
-  static std::string record_label(const Record& r) {
-    using viscoroll::cli::scene_detail::shortest;
-    const Value* method = find(r, "method");
-    std::string out =
-        (method ? std::get<std::string>(*method) : std::string("the")) + " solution for ";
-    const double t = real(r, "temperature"), tau = real(r, "tau");
-    if (!std::isnan(t))
-      out += "temperature = " + shortest(t) + ", ";
-    else if (!std::isnan(tau))
-      out += "tau = " + shortest(tau) + ", ";
-    return out + "speed = " + shortest(real(r, "speed"));
-  }
 };
 
 /// The scene as the solvers take it, from options or from a scene file.
@@ -918,6 +892,7 @@ int line_terms(const Problem& p) {
 }
 
 viscoroll::cli::ValidityFacts validity_facts(const Problem& p);
+viscoroll::cli::LongTermContact line_long_term(const Problem& p);
 
 /// The line-contact (3-D) solver; for each tau (a prony material: each temperature) the speeds
 /// are swept by viscoroll::sweep: in chunks of 16 in the given order, each speed seeded with the
@@ -1073,14 +1048,7 @@ int run_bem(const Problem& p, Output& out) {
   // tau nor the temperature changes the long-term compliance); the ellipsoid's is Hertz's, in
   // each solution.
   std::optional<viscoroll::cli::LongTermContact> roller_long_term;
-  if (p.roller)
-    roller_long_term = std::visit(
-        [&](const auto& roller) {
-          return p.prony ? viscoroll::cli::profile_long_term(roller, *p.prony, p.load)
-                         : viscoroll::cli::profile_long_term(roller, material(p, p.tau.front()),
-                                                             p.load);
-        },
-        *p.roller);
+  if (p.roller) roller_long_term = line_long_term(p);
   // The record after its head.
   const auto fields = [&](const auto& s, const viscoroll::AlongRoller<double>& along, double speed,
                           double seconds) {
@@ -1208,16 +1176,16 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
     for (auto& r : solve_by(Method::plane)) keep(std::move(r), vc::plane_cylinder());
     return status;
   }
+  const auto facts = validity_facts(p);
   std::string why = p.roller ? std::string() : vc::ellipsoid_precheck(p.c1, *p.c2);
   if (why.empty()) {
     const auto lt = line_long_term(p);
-    why = vc::line_precheck(lt.a, lt.l, validity_facts(p));
+    why = vc::line_precheck(lt.a, lt.l, facts);
   }
   if (!why.empty()) {
     for (auto& r : solve_by(Method::bem)) keep(std::move(r), vc::bem_instead(why));
     return status;
   }
-  const auto facts = validity_facts(p);
   std::vector<Record> lines = solve_by(Method::line), bems;
   std::vector<std::string> rejected;
   for (const auto& r : lines) rejected.push_back(vc::line_rejection(r, facts));

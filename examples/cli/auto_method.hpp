@@ -45,18 +45,12 @@ inline std::string end_loaded(double a0, double l0, const ValidityFacts& facts) 
 /// so and names the bem method, in words a user can act on.
 template <class Record>
 void add_end_hint(Record& record, const ValidityFacts& facts) {
-  bool converged = true;
-  for (const auto& [name, value] : record)
-    if (name == "converged")
-      if (const auto* b = std::get_if<bool>(&value)) converged = *b;
-  if (converged) return;
+  if (record_flag(record, "converged", true)) return;
   const std::string end =
       end_loaded(record_number(record, "a_long_term"), record_number(record, "l0"), facts);
   if (end.empty()) return;
-  for (auto& [name, value] : record)
-    if (name == "reason")
-      if (auto* text = std::get_if<std::string>(&value))
-        *text += "; " + end + ": use the bem method";
+  if (auto* text = record_value<std::string>(record, "reason"))
+    *text += "; " + end + ": use the bem method";
 }
 
 /// The reason a plane record gives for a cylinder (the auto method's only choice there).
@@ -92,22 +86,14 @@ inline std::string line_precheck(double a0, double l0, const ValidityFacts& fact
 /// Why the line method's `record` cannot answer for the auto method (empty: it stands).
 template <class Record>
 std::string line_rejection(const Record& record, const ValidityFacts& facts) {
-  bool converged = false, root = true;
-  std::string reason;
-  std::vector<std::string> warnings;
-  for (const auto& [name, value] : record) {
-    if (name == "converged")
-      if (const auto* b = std::get_if<bool>(&value)) converged = *b;
-    if (name == "root")
-      if (const auto* b = std::get_if<bool>(&value)) root = *b;
-    if (name == "reason")
-      if (const auto* s = std::get_if<std::string>(&value)) reason = *s;
-    if (name == "warnings")
-      if (const auto* w = std::get_if<std::vector<std::string>>(&value)) warnings = *w;
+  if (!record_flag(record, "converged", false)) {
+    const auto* reason = record_value<std::string>(record, "reason");
+    return "the line method did not converge (" + (reason ? *reason : std::string()) + ")";
   }
-  if (!converged) return "the line method did not converge (" + reason + ")";
-  if (!root) return "the line equations have no root here (a least-squares minimum)";
-  if (!warnings.empty()) return "the line method warned: " + warnings.front();
+  if (!record_flag(record, "root", true))
+    return "the line equations have no root here (a least-squares minimum)";
+  const auto* warnings = record_value<std::vector<std::string>>(record, "warnings");
+  if (warnings && !warnings->empty()) return "the line method warned: " + warnings->front();
   for (const auto& b : record_breaches(record, facts))
     if (b.check == ValidityCheck::slenderness || b.check == ValidityCheck::roller_length)
       return b.message;

@@ -9,9 +9,12 @@
 #include <numbers>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 #include <viscoroll/core/validity.hpp>
+
+#include "scene_file.hpp"
 
 namespace viscoroll::cli {
 
@@ -32,14 +35,55 @@ inline double shear_wave_speed(double c, double nu, double density) {
   return std::sqrt((1 - nu) / (2 * std::numbers::pi * c) / density);
 }
 
-/// The number of `key` in `record` (a sequence of (key, value) pairs or fields of a
-/// std::variant holding a double), or NaN.
+/// The value of `key` in `record` (a sequence of (key, value) pairs or fields, the value a
+/// std::variant) when it holds a T, or null.
+template <class T, class Record>
+auto record_value(Record& record, std::string_view key)
+    -> std::conditional_t<std::is_const_v<Record>, const T*, T*> {
+  for (auto& [name, value] : record)
+    if (name == key)
+      if (auto* x = std::get_if<T>(&value)) return x;
+  return nullptr;
+}
+
+/// The number of `key` in `record`, or NaN.
 template <class Record>
 double record_number(const Record& record, std::string_view key) {
-  for (const auto& [name, value] : record)
-    if (name == key)
-      if (const auto* x = std::get_if<double>(&value)) return *x;
-  return std::numeric_limits<double>::quiet_NaN();
+  const auto* x = record_value<double>(record, key);
+  return x ? *x : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The flag `key` of `record`, or `fallback` where it has none.
+template <class Record>
+bool record_flag(const Record& record, std::string_view key, bool fallback) {
+  const auto* b = record_value<bool>(record, key);
+  return b ? *b : fallback;
+}
+
+/// "<method> solution for tau = T, speed = V" (temperature = T for a prony material with a shift
+/// law): how both front doors name a result in their messages.
+template <class Record>
+std::string record_label(const Record& record) {
+  const auto* method = record_value<std::string>(record, "method");
+  std::string out = (method ? *method : std::string("the")) + " solution for ";
+  const double t = record_number(record, "temperature"), tau = record_number(record, "tau");
+  if (!std::isnan(t))
+    out += "temperature = " + scene_detail::shortest(t) + ", ";
+  else if (!std::isnan(tau))
+    out += "tau = " + scene_detail::shortest(tau) + ", ";
+  return out + "speed = " + scene_detail::shortest(record_number(record, "speed"));
+}
+
+/// Adds `messages` to the record's warnings (the field `warnings`, appended when the record has
+/// none): after the warnings it has, or before them with `first`.
+template <class Record>
+void add_warnings(Record& record, const std::vector<std::string>& messages, bool first = false) {
+  if (messages.empty()) return;
+  if (auto* list = record_value<std::vector<std::string>>(record, "warnings")) {
+    list->insert(first ? list->begin() : list->end(), messages.begin(), messages.end());
+    return;
+  }
+  record.push_back(typename Record::value_type{"warnings", messages});
 }
 
 /// The breaches of the result `record` (converged; its method named by the field `method`)
@@ -47,14 +91,8 @@ double record_number(const Record& record, std::string_view key) {
 template <class Record>
 std::vector<ValidityBreach<double>> record_breaches(const Record& record,
                                                     const ValidityFacts& facts) {
-  bool converged = false, line = false;
-  for (const auto& [name, value] : record) {
-    if (name == "converged")
-      if (const auto* b = std::get_if<bool>(&value)) converged = *b;
-    if (name == "method")
-      if (const auto* s = std::get_if<std::string>(&value)) line = *s == "line";
-  }
-  if (!converged) return {};
+  if (!record_flag(record, "converged", false)) return {};
+  const auto* method = record_value<std::string>(record, "method");
   ValidityInputs<double> in;
   in.radius = facts.radius;
   in.a0 = record_number(record, "a0");
@@ -63,7 +101,7 @@ std::vector<ValidityBreach<double>> record_breaches(const Record& record,
   in.y_plus = record_number(record, "y_plus");
   in.body_min = facts.body_min;
   in.body_max = facts.body_max;
-  in.line_theory = line;
+  in.line_theory = method && *method == "line";
   in.speed = record_number(record, "speed");
   in.shear_wave_speed = facts.shear_wave_speed;
   return check_validity(in);
@@ -75,14 +113,7 @@ template <class Record>
 std::vector<std::string> add_validity_warnings(Record& record, const ValidityFacts& facts) {
   std::vector<std::string> messages;
   for (const auto& b : record_breaches(record, facts)) messages.push_back(b.message);
-  if (messages.empty()) return messages;
-  for (auto& [name, value] : record)
-    if (name == "warnings")
-      if (auto* list = std::get_if<std::vector<std::string>>(&value)) {
-        list->insert(list->end(), messages.begin(), messages.end());
-        return messages;
-      }
-  record.push_back(typename Record::value_type{"warnings", messages});
+  add_warnings(record, messages);
   return messages;
 }
 

@@ -689,24 +689,6 @@ SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long>
   throw std::logic_error("viscoroll: unknown method");
 }
 
-/// "<method> solution for tau = T, speed = V" (temperature = T for a Prony material with a shift
-/// law), as viscoroll-solve names a result in its messages.
-std::string record_label(const Solved& solved) {
-  const auto real = [&](const char* key) {
-    const Value* v = solved.find(key);
-    return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
-  };
-  const Value* method = solved.find("method");
-  std::string out =
-      (method ? std::get<std::string>(*method) : std::string("the")) + " solution for ";
-  const double t = real("temperature"), tau = real("tau");
-  if (!std::isnan(t))
-    out += "temperature = " + shortest(t) + ", ";
-  else if (!std::isnan(tau))
-    out += "tau = " + shortest(tau) + ", ";
-  return out + "speed = " + shortest(real("speed"));
-}
-
 /// The model's validity checks (core/validity.hpp) on every result, as viscoroll-solve's: each
 /// breach joins the result's warnings (cli::add_validity_warnings) and is returned as a message
 /// naming the result, for Python's warnings; with `strict` the first breach is a ValueError.
@@ -735,19 +717,16 @@ std::vector<std::string> check_validity(const std::vector<SolvedPtr>& solved,
   for (const auto& r : solved) {
     Record& record = record_of(r);
     if (r->method() == Method::line) cli::add_end_hint(record, facts);
-    if (scene_wide.empty()) continue;
-    for (auto& [key, value] : record)
-      if (key == "warnings")
-        if (auto* list = std::get_if<std::vector<std::string>>(&value))
-          list->insert(list->begin(), scene_wide.begin(), scene_wide.end());
+    cli::add_warnings(record, scene_wide, true);
   }
   for (const auto& r : solved)
     for (const auto& breach : cli::add_validity_warnings(record_of(r), facts)) {
       if (strict)
-        throw std::invalid_argument("viscoroll: strict: " + record_label(*r) + ": " + breach +
+        throw std::invalid_argument("viscoroll: strict: " + cli::record_label(r->record()) + ": " +
+                                    breach +
                                     " (without strict this is a warning; docs/errors.md, "
                                     "\"Validity checks\")");
-      messages.push_back("viscoroll: " + record_label(*r) + ": " + breach);
+      messages.push_back("viscoroll: " + cli::record_label(r->record()) + ": " + breach);
     }
   return messages;
 }
