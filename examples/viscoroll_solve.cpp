@@ -1181,6 +1181,10 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   if (why.empty()) {
     const auto lt = line_long_term(p);
     why = vc::line_precheck(lt.a, lt.l, facts);
+    if (why.empty() && p.roller)
+      why = std::visit(
+          [&](const auto& profile) { return vc::axial_curvature_precheck(profile, lt.a, lt.l); },
+          *p.roller);
   }
   if (!why.empty()) {
     for (auto& r : solve_by(Method::bem)) keep(std::move(r), vc::bem_instead(why));

@@ -6,12 +6,15 @@
 //   - before any solve, the ellipsoid needs c2 < 8 e^-3 c1 (the line theory's domain), and the
 //     line theory a slender long-term contact, l0/a0 >= 3.6 (V3: its error in d is below
 //     0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller and ending at least
-//     2.8 a0 before its end (end_loaded);
+//     2.8 a0 before its end (end_loaded), on a roller that curves along its axis inside that
+//     contact by less than 8 e^-3 c1, the ellipsoid's limit (axial_curvature_precheck);
 //   - a line result stands if it converged to a root (not a least-squares minimum) without a
-//     warning, its contact slender (V3) and inside the roller (V2).
+//     warning, its contact slender (V3; for two or more active memory terms, the spectrum path,
+//     l/a0 >= 12, V3s) and inside the roller (V2).
 // Every result of the auto method carries `method_reason`: why its method answered.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -81,6 +84,37 @@ inline std::string line_precheck(double a0, double l0, const ValidityFacts& fact
     return s.str();
   }
   return {};
+}
+
+/// Why the line method does not apply to a roller of finite length whose `profile` (a
+/// RollerProfile) curves along its axis, inside the long-term static contact |y| <= l0 of half
+/// width a0, by more than the line theory's domain allows the ellipsoid (c2 < 8 e^-3 c1,
+/// LineScene::validate), or empty. The curvature is the drop's slope difference over a0/2,
+/// (h'(y + a0/4) - h'(y - a0/4))/(a0/2), the mean curvature on the contact's own scale, sampled
+/// at 257 points of [-l0, l0]: a crown or edge radius that the long-term contact runs onto is
+/// caught (a flat idler's edge radius of 0.4 R put the line method's d 1.4% off, one of 0.8 R
+/// its chi 3.9%: docs/validation.md).
+template <class Profile>
+std::string axial_curvature_precheck(const Profile& profile, double a0, double l0) {
+  if (!(std::isfinite(a0) && std::isfinite(l0) && a0 > 0 && l0 > 0)) return {};
+  const double c1 = profile.c1(), limit = 8 * std::exp(-3.0) * c1, step = a0 / 4;
+  const double lo = profile.y_min() + step, hi = profile.y_max() - step;
+  double worst = 0, at = 0;
+  constexpr int samples = 256;
+  for (int k = 0; k <= samples; ++k) {
+    const double y = std::clamp(-l0 + 2 * l0 * k / samples, lo, hi);
+    const double c =
+        std::abs(profile.drop_slope(y + step) - profile.drop_slope(y - step)) / (2 * step);
+    if (c > worst) worst = c, at = y;
+  }
+  if (!(worst >= limit)) return {};
+  std::ostringstream s;
+  s.precision(3);
+  s << "the roller's curvature along its axis reaches " << worst / c1
+    << " times its curvature across (" << worst << " against " << c1 << ") at y = " << at
+    << ", inside the long-term contact (|y| <= l0 = " << l0
+    << "): the line theory needs less than 8 e^-3 = 0.398 times (the ellipsoid's c2 < 8 e^-3 c1)";
+  return s.str();
 }
 
 /// Why the line method's `record` cannot answer for the auto method (empty: it stands).

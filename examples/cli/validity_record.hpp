@@ -102,6 +102,8 @@ std::vector<ValidityBreach<double>> record_breaches(const Record& record,
   in.body_min = facts.body_min;
   in.body_max = facts.body_max;
   in.line_theory = method && *method == "line";
+  if (const auto* terms = record_value<long long>(record, "active_terms"))
+    in.memory_terms = static_cast<int>(*terms);
   in.speed = record_number(record, "speed");
   in.shear_wave_speed = facts.shear_wave_speed;
   return check_validity(in);

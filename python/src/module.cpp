@@ -595,13 +595,18 @@ cli::ValidityFacts validity_facts(const SceneSpec& scene) {
 }
 
 /// Why the line method does not apply to the scene before any solve (cli/auto_method.hpp: the
-/// ellipsoid's c2/c1, then line_precheck on the line theory's long-term contact), or empty.
+/// ellipsoid's c2/c1, then line_precheck on the line theory's long-term contact and a roller's
+/// axial_curvature_precheck), or empty.
 std::string auto_precheck(const SceneSpec& scene) {
   std::string why = scene.roller.axial ? std::string()
                                        : cli::ellipsoid_precheck(scene.roller.c1, scene.roller.c2);
   if (why.empty()) {
     const auto [a0, l0] = line_long_term(scene);
     why = cli::line_precheck(a0, l0, validity_facts(scene));
+    if (why.empty() && scene.roller.axial)
+      why = cli::visit_axial_profile(*scene.roller.axial, [&](const auto& profile, double) {
+        return cli::axial_curvature_precheck(profile, a0, l0);
+      });
   }
   return why;
 }

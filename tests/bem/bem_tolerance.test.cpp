@@ -101,14 +101,19 @@ TEST_CASE("bem tolerance: the refinement sizes the cells by the contact it found
           "[bem][tolerance]") {
   // The glassy contact (speed 1e12) is (1 + f)^(-1/3) = 0.46 times as wide as the long-term Hertz
   // ellipse that sizes a fixed grid: a fixed grid of n elements puts 0.46 n cells on its
-  // semi-axis, the refinement's grids after the first about n (|x| + hx/2 of the farthest loaded
-  // cell, which is within a cell of a(0)).
+  // semi-axis, the refinement's grids after the first about n. Grid n spans across the reach of
+  // the contact grid n/2 found, |x| + 3h/2 of its farthest loaded cell (h that grid's cell, at
+  // most a_L/(n/2)), and that cell lies within h/2 of the glassy a_g: n hx <= a_g + 2h, so
+  // n hx <= a_g + 4 a_L/n (docs/theory.md section 17).
   const BemScene<double> scene{1.0, c2_paper, load_paper, 1e12};
   const auto s = refining(0.01).solve(scene);
   REQUIRE(s.converged);
   REQUIRE(s.elements >= 16);
   const auto long_term = viscoroll::hertz_contact(1.0, c2_paper, (1 + f) * c, load_paper);
-  CHECK(s.grid.hx < 0.5 * long_term.a / s.elements);
+  const auto glassy = viscoroll::hertz_contact(1.0, c2_paper, c, load_paper);
+  const double n = s.elements;
+  CHECK(n * s.grid.hx <= glassy.a + 4 * long_term.a / n);
+  CHECK(n * s.grid.hx < long_term.a);  // finer than the fixed grid of n
   CHECK(s.a0 / s.grid.hx >= 0.8 * s.elements);
   // Along the roller the cells stay those of the long-term ellipse (Hertz computed in the
   // solver's binary units: equal to a few ulp).

@@ -113,6 +113,24 @@ TEST_CASE("validity: breaches name the quantity, its value, the limit and the ca
     in.line_theory = false;  // the bem: no slenderness needed
     CHECK(viscoroll::check_validity(in).size() == 2);
   }
+  SECTION("the line method's spectrum path needs l/a0 >= 12 (V3s)") {
+    ValidityInputs<double> in;
+    in.line_theory = true;
+    in.a0 = 0.01;
+    in.l = 0.05;  // l/a0 = 5: within (V3), not (V3s)
+    CHECK(viscoroll::check_validity(in).empty());
+    in.memory_terms = 2;
+    const auto b = viscoroll::check_validity(in);
+    REQUIRE(b.size() == 1);
+    CHECK(b[0].check == ValidityCheck::slenderness);
+    CHECK(b[0].limit == 12);
+    // 0.91 (a0/l)^2 = 0.91/25 = 3.64%.
+    CHECK_THAT(b[0].message, Catch::Contains("l/a0 = 5 is below 12 for a spectrum (2 active "
+                                             "terms): the line method is off by up to 0.91 "
+                                             "(a0/l)^2 = 3.64% in chi"));
+    in.l = 0.121;  // l/a0 = 12.1
+    CHECK(viscoroll::check_validity(in).empty());
+  }
 }
 
 }  // namespace test_validity

@@ -585,18 +585,28 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
   std::optional<BemErrorEstimate<Real>> before_change;  // the change between the two grids before
   bool three_grids = false;                             // the last estimate had three grids
   // The cells' semi-axis across: the long-term Hertz a_H, then the reach of the contact found on
-  // the grid before, |x| + hx/2 of its farthest loaded cell, when that is less (the faster, the
-  // narrower the contact: the glassy one is (1 + f)^(-1/3) a_H wide), so that hx at least halves.
+  // the grid before, |x| + 3 hx/2 of its farthest loaded cell (the edge lies within a cell of
+  // that cell's centre), when that is less (the faster, the narrower the contact: the glassy one
+  // is (1 + f)^(-1/3) a_H wide), so that hx at least halves. A contact that outgrows a grid sized
+  // so (it reaches the grid's border, as an end-loaded roller's edge peak can) is solved again on
+  // a grid twice as wide across, up to a_H.
   Real across = hertz.a;
   for (int n = options_.grid; n <= options_.max_grid; n *= 2) {
     last = solve_on(u, n, start, across);
+    setup += last->seconds_setup;
+    seconds += last->seconds_solve;
+    while (!last->converged && last->reason.starts_with("contact reaches the grid boundary") &&
+           across < hertz.a) {
+      across = std::min(hertz.a, 2 * across);
+      last = solve_on(u, n, start, across);
+      setup += last->seconds_setup;
+      seconds += last->seconds_solve;
+    }
     Solution& s = *last;
-    setup += s.seconds_setup;
-    seconds += s.seconds_solve;
     Real reach = 0;
     for (int j = 0; j < s.grid.ny; ++j)
       for (int i = 0; i < s.grid.nx; ++i)
-        if (s.p(i, j) > 0) reach = std::max(reach, abs(s.grid.x(i)) + s.grid.hx / 2);
+        if (s.p(i, j) > 0) reach = std::max(reach, abs(s.grid.x(i)) + 3 * s.grid.hx / 2);
     if (reach > 0) across = std::min(across, times_power_of_two(reach, -u.length));
     // A grid too coarse for the contact (fewer than 3 cells across) is refined; any other
     // failure is returned as it is.

@@ -1,8 +1,8 @@
 // viscoroll: whether a result lies inside the assumptions of its model (docs/theory.md, section
-// 18, (V1)-(V4)). Every method rests on the linear half-space theory of small slopes; the line
-// method also on a slender contact; all of them on quasi-static rolling and on a contact inside
-// the roller's body. check_validity() reads a result's contact and its scene and returns each
-// breach with the quantity, its value, the limit and the likely cause; the front doors print
+// 18, (V1)-(V4), (V3s)). Every method rests on the linear half-space theory of small slopes; the
+// line method also on a slender contact; all of them on quasi-static rolling and on a contact
+// inside the roller's body. check_validity() reads a result's contact and its scene and returns
+// each breach with the quantity, its value, the limit and the likely cause; the front doors print
 // them as warnings, or refuse the result with --strict (strict=True in Python).
 #pragma once
 
@@ -35,7 +35,10 @@ struct ValidityInputs {
   Real y_minus = none, y_plus = none;     ///< the contact's ends along the roller (m)
   Real body_min = none, body_max = none;  ///< the roller body's ends along y (m)
   bool line_theory = false;               ///< the result is the line method's: (V3) applies
-  Real speed = none;                      ///< rolling speed (m/s)
+  /// The line method's active memory terms (LineSpectrumSolution::active_terms): two or more
+  /// solve by its spectrum path, whose chi needs the longer contact of (V3s).
+  int memory_terms = 1;
+  Real speed = none;  ///< rolling speed (m/s)
   /// sqrt(mu_glassy / density), the rubber's fastest shear-wave speed (m/s), where a density is
   /// given.
   Real shear_wave_speed = none;
@@ -59,6 +62,9 @@ struct ValidityLimits {
   static constexpr Real small_slope = Real(0.2);
   /// (V3): the line theory's static error in d is below 0.13 (a0/l)^2; 1% at l/a0 = 3.6.
   static constexpr Real slenderness = Real(3.6);
+  /// (V3s): the line method's chi for two or more memory terms is off by up to 0.91 (a0/l)^2
+  /// (measured); 0.63% at l/a0 = 12.
+  static constexpr Real spectrum_slenderness = Real(12);
   /// (V4): inertia changes the stresses by about (V/c_s)^2; 1% at V/c_s = 0.1.
   static constexpr Real quasi_static = Real(0.1);
 };
@@ -105,10 +111,16 @@ std::vector<ValidityBreach<Real>> check_validity(const ValidityInputs<Real>& in)
                          "or the body is shorter than meant"});
     }
   }
-  // (V3) The line theory's slenderness: l/a0.
+  // (V3) The line theory's slenderness: l/a0; (V3s) for the line method's spectrum path.
   if (in.line_theory && isfinite(in.l) && isfinite(in.a0) && in.a0 > 0) {
     const Real s = in.l / in.a0;
-    if (s < L::slenderness)
+    if (in.memory_terms >= 2 && s < L::spectrum_slenderness)
+      out.push_back({ValidityCheck::slenderness, s, L::spectrum_slenderness,
+                     "l/a0 = " + ratio(s) + " is below " + text(L::spectrum_slenderness) +
+                         " for a spectrum (" + std::to_string(in.memory_terms) +
+                         " active terms): the line method is off by up to 0.91 (a0/l)^2 = " +
+                         ratio(Real(91) / (s * s)) + "% in chi; use the bem method"});
+    else if (s < L::slenderness)
       out.push_back({ValidityCheck::slenderness, s, L::slenderness,
                      "l/a0 = " + ratio(s) + " is below " + text(L::slenderness) +
                          ": the line theory is off by up to 0.13 (a0/l)^2 = " +
