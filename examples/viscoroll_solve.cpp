@@ -1158,6 +1158,9 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   const auto solve_by = [&](Method m) {
     Problem q = p;
     q.method = m;
+    // A line result that is not a root does not answer (line_rejection): no least-squares
+    // minimisation past Levenberg-Marquardt's stop.
+    q.line.least_squares = false;
     Output scratch(quiet, m, total);
     const int status = m == Method::plane  ? run_plane(q, scratch)
                        : m == Method::line ? run_line(q, scratch)

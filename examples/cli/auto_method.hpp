@@ -8,6 +8,8 @@
 //     0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller and ending at least
 //     2.8 a0 before its end (end_loaded), on a roller that curves along its axis inside that
 //     contact by less than 8 e^-3 c1, the ellipsoid's limit (axial_curvature_precheck);
+//   - the line method is asked for a root only (LineOptions::least_squares off: a least-squares
+//     minimum would not answer, and its minimisation can take seconds);
 //   - a line result stands if it converged to a root (not a least-squares minimum) without a
 //     warning, its contact slender (V3; for two or more active memory terms, the spectrum path,
 //     l/a0 >= 12, V3s) and inside the roller (V2).
@@ -121,7 +123,11 @@ std::string axial_curvature_precheck(const Profile& profile, double a0, double l
 template <class Record>
 std::string line_rejection(const Record& record, const ValidityFacts& facts) {
   if (!record_flag(record, "converged", false)) {
+    // The auto method solves for a root only (LineOptions::least_squares off): a stop at a
+    // least-squares minimum says there is none.
     const auto* reason = record_value<std::string>(record, "reason");
+    if (reason && reason->find("least-squares minimum") != std::string::npos)
+      return "the line equations have no root here (a least-squares minimum)";
     return "the line method did not converge (" + (reason ? *reason : std::string()) + ")";
   }
   if (!record_flag(record, "root", true))

@@ -265,9 +265,10 @@ std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
 // method; `start` seeds the iteration (line, bem) when it is a solution of the same method.
 SolvedPtr solve_plane(const SceneSpec& scene, double speed);
 /// fast: the line method's fast setting (LineOptions::fast(); FastLineSolverD for a material of
-/// one relaxation time).
+/// one relaxation time). roots_only: LineOptions::least_squares off (the auto method, which takes
+/// only a root: a result that is not one stops at Levenberg-Marquardt's stop).
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
-                     const Solved* start);
+                     const Solved* start, bool roots_only = false);
 /// tolerance: BemOptions::tolerance (0: the one grid `grid`; else refined from it).
 SolvedPtr solve_bem(const SceneSpec& scene, double speed, int grid, double tolerance,
                     const Solved* start);
@@ -280,7 +281,7 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
                                    const SweepOptions& options);
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
-                                  bool fast, const SweepOptions& options);
+                                  bool fast, const SweepOptions& options, bool roots_only = false);
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
                                  double tolerance, const SweepOptions& options);
 

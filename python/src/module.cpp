@@ -637,7 +637,8 @@ SolvedPtr solve_auto(const SceneSpec& scene, double speed, bool fast, double tol
         cli::bem_instead(why));
   };
   if (const std::string why = auto_precheck(scene); !why.empty()) return bem(why);
-  SolvedPtr line = solve_line(scene, speed, auto_terms(scene, fast), fast, seed(Method::line));
+  SolvedPtr line =
+      solve_line(scene, speed, auto_terms(scene, fast), fast, seed(Method::line), true);
   const std::string rejected = cli::line_rejection(line->record(), validity_facts(scene));
   if (rejected.empty()) return with_reason(std::move(line), cli::line_accepted());
   return bem(rejected);
@@ -661,7 +662,8 @@ std::vector<SolvedPtr> sweep_auto(const SceneSpec& scene, std::span<const double
   };
   if (const std::string why = auto_precheck(scene); !why.empty())
     return reasoned(bems(), [&](std::size_t) { return cli::bem_instead(why); });
-  std::vector<SolvedPtr> lines = sweep_line(scene, speeds, auto_terms(scene, fast), fast, options);
+  std::vector<SolvedPtr> lines =
+      sweep_line(scene, speeds, auto_terms(scene, fast), fast, options, true);
   if (options.stop && *options.stop) return lines;  // interrupted: dropped by the caller
   const auto facts = validity_facts(scene);
   std::vector<std::string> rejected;

@@ -71,21 +71,24 @@ class LineSpectrumSolved final : public Solved {
   Solution s_;
 };
 
-/// The line options at `terms`, over LineOptions::fast() for the fast setting.
-LineOptions options_for(int terms, bool fast) {
+/// The line options at `terms`, over LineOptions::fast() for the fast setting; `roots_only`: no
+/// least-squares minimisation (LineOptions::least_squares off).
+LineOptions options_for(int terms, bool fast, bool roots_only) {
   LineOptions options = fast ? LineOptions::fast() : LineOptions{};
   options.terms = terms;
+  options.least_squares = !roots_only;
   return options;
 }
 
 template <class Solver>
-Solver make_solver(const SceneSpec& scene, int terms, bool fast) {
+Solver make_solver(const SceneSpec& scene, int terms, bool fast, bool roots_only) {
   const auto& m = scene.material;
-  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau), options_for(terms, fast));
+  return Solver(StandardLinearSolid<double>(m.mu_d, m.nu, m.f, m.tau),
+                options_for(terms, fast, roots_only));
 }
 
-SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int terms, bool fast) {
-  return SpectrumSolver(prony_at(scene), options_for(terms, fast));
+SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int terms, bool fast, bool roots_only) {
+  return SpectrumSolver(prony_at(scene), options_for(terms, fast, roots_only));
 }
 
 LineScene<double> line_scene(const SceneSpec& scene, double speed) {
@@ -115,19 +118,20 @@ auto with_profile(const SceneSpec& scene, F f) {
 }  // namespace
 
 SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
-                     const Solved* start) {
+                     const Solved* start, bool roots_only) {
   const auto keys = RecordKeys::of(scene);
   // The scene `scene_at` builds at `speed`, by the material's solver (the setting's).
   const auto solve = [&](auto scene_at) {
     if (scene.material.prony)
-      return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast),
+      return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast, roots_only),
                                               scene_at(speed), Method::line, start, keys, terms);
     if (fast)
       return solve_seeded<LineSolved<FastLineSolverD>>(
-          make_solver<FastLineSolverD>(scene, terms, fast), scene_at(speed), Method::line, start,
-          keys, terms);
-    return solve_seeded<LineSolved<LineSolverD>>(make_solver<LineSolverD>(scene, terms, fast),
-                                                 scene_at(speed), Method::line, start, keys, terms);
+          make_solver<FastLineSolverD>(scene, terms, fast, roots_only), scene_at(speed),
+          Method::line, start, keys, terms);
+    return solve_seeded<LineSolved<LineSolverD>>(
+        make_solver<LineSolverD>(scene, terms, fast, roots_only), scene_at(speed), Method::line,
+        start, keys, terms);
   };
   if (scene.roller.axial)
     return with_profile(scene, [&](auto profile) {
@@ -137,21 +141,22 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
 }
 
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
-                                  bool fast, const SweepOptions& options) {
+                                  bool fast, const SweepOptions& options, bool roots_only) {
   const auto keys = RecordKeys::of(scene);
   // The scenes `scene_at` builds, every speed checked before any work, by the material's solver
   // (the setting's).
   const auto sweep = [&](auto scene_at) {
     for (const double v : speeds) scene_at(v);
     if (scene.material.prony)
-      return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast),
+      return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast, roots_only),
                                               scene_at(0.0), speeds, keys, terms, options);
     if (fast)
       return sweep_seeded<LineSolved<FastLineSolverD>>(
-          make_solver<FastLineSolverD>(scene, terms, fast), scene_at(0.0), speeds, keys, terms,
-          options);
-    return sweep_seeded<LineSolved<LineSolverD>>(make_solver<LineSolverD>(scene, terms, fast),
-                                                 scene_at(0.0), speeds, keys, terms, options);
+          make_solver<FastLineSolverD>(scene, terms, fast, roots_only), scene_at(0.0), speeds, keys,
+          terms, options);
+    return sweep_seeded<LineSolved<LineSolverD>>(
+        make_solver<LineSolverD>(scene, terms, fast, roots_only), scene_at(0.0), speeds, keys,
+        terms, options);
   };
   if (scene.roller.axial)
     return with_profile(scene, [&](auto profile) {
