@@ -1,4 +1,4 @@
-// The BEM at the ends of the floating-point range (issue 24, item 1; docs/bem.md, "Scaling"):
+// The BEM at the ends of the floating-point range (docs/bem.md, "Scaling"):
 // the solver computes in units of powers of two (lengths near the long-term Hertz semi-axis,
 // pressures by the long-term compliance), so a scene whose answer is representable is solved
 // whatever its inputs' magnitudes, with the bits of the same scene in moderate units; one whose

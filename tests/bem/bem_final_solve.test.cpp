@@ -1,4 +1,4 @@
-// Inexact early solves do not change the result (issue 22): with coarse_tolerance (the default
+// Inexact early solves do not change the result: with coarse_tolerance (the default
 // 1e-3) the paper's scene gives d, chi, a(0), l and the peak pressure of the iteration with every
 // active set solved to the tolerance, to 1e-10 relative. Both end with a final solve of the
 // converged set to final_tolerance = 1e-13 (docs/bem.md, B11); without it the two differed by up

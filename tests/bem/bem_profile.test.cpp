@@ -1,4 +1,4 @@
-// The BEM for any roller profile (issue 21, bem_profile.hpp, docs/bem.md B14) and the contact
+// The BEM for any roller profile (bem_profile.hpp, docs/bem.md B14) and the contact
 // along the roller (BemSolution::along_roller): the ellipsoid's scene is the ellipsoid's; Hertz's
 // F0(y) and ends; a tilt mirrors and shifts the contact towards the side pressed harder; a barrel
 // (L_f = 0) is the ellipsoid C2 = 1/R_c to O((l/R_c)^2); a long flat part carries the plane

@@ -1,4 +1,4 @@
-// Two independent solutions of the static elastic crowned roller (issue 21): the exact BEM on the
+// Two independent solutions of the static elastic crowned roller: the exact BEM on the
 // profile (bem_profile.hpp) and the line theory's static contact for any profile
 // (line/static_profile_contact.hpp, docs/theory.md section 15). They share nothing but the
 // profile. Measured at grid N = 16 (docs/validation.md, "Crowned rollers"): d to 0.3%, the ends

@@ -1,4 +1,4 @@
-// Property test of the boundary-element solver (issue 6): random scenes, materials (standard
+// Property test of the boundary-element solver: random scenes, materials (standard
 // linear solid, generalised Maxwell with 0-3 terms, elastic) and options, inside and outside the
 // valid ranges. Each ends in
 //   - std::invalid_argument whose message names one of the parameters drawn invalid (and a scene

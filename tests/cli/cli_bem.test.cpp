@@ -1,4 +1,4 @@
-// viscoroll-solve --method bem (issue 6): bad input prints the library's message (parameter, value,
+// viscoroll-solve --method bem: bad input prints the library's message (parameter, value,
 // range) or the driver's on stderr, exits 2 and prints nothing on stdout; good input prints one
 // JSON line per tau and exits 0. The program is run as cli_run.hpp says.
 #include <algorithm>
@@ -137,8 +137,9 @@ TEST_CASE("cli: viscoroll-solve --method line prints the domain warning on stder
   CHECK(ok.out.find("\"warnings\":[]") != std::string::npos);
 }
 
-TEST_CASE("cli: viscoroll-solve --method bem solves the extreme scenes of issue 24 or names them",
-          "[cli][bem]") {
+TEST_CASE(
+    "cli: viscoroll-solve --method bem solves the floating-point extreme scenes or names them",
+    "[cli][bem]") {
   VISCOROLL_REQUIRE_SOLVE_PROGRAM();
   // Answers that are representable: converged, finite (no inf, nan or null), exit 0.
   for (const auto& changes : std::vector<std::vector<std::string>>{

@@ -1,4 +1,4 @@
-// viscoroll-solve at the ends of the floating-point range (issue 24): a plane scene ends in strict
+// viscoroll-solve at the ends of the floating-point range: a plane scene ends in strict
 // JSON lines with finite numbers (exit 0) or in one message on stderr and nothing on stdout (exit
 // 2), also when one speed of a sweep is the bad one; V tau overflowing a double is null in every
 // method, the rest of the line finite (docs/cli.md, docs/errors.md).

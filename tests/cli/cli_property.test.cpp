@@ -1,4 +1,4 @@
-// Property test of viscoroll-solve at the ends of the floating-point range (issue 24): random
+// Property test of viscoroll-solve at the ends of the floating-point range: random
 // scenes whose inputs are each finite and log-uniform over 1e-300 ... 1e300 (nu uniform over its
 // range), so that their products overflow and underflow, run through the command line with a
 // time limit per case. Every case must end in one of

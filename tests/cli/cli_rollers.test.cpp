@@ -1,4 +1,4 @@
-// Rollers of finite length from the command line (issue 21; docs/cli.md, docs/rollers.md): the
+// Rollers of finite length from the command line (docs/cli.md, docs/rollers.md): the
 // shipped crowned roller runs with the bem method, --profile-out writes the load along the roller
 // (its rows sum to the load), a tilt and its opposite mirror, and the plane method, a misplaced
 // --profile-out and invalid profiles are errors naming the key (the line method on such rollers:

@@ -66,8 +66,7 @@ TEST_CASE("line bounds: the paper's scene keeps G >= 0, (B1), (B2) and (B3) at e
   }
 }
 
-TEST_CASE("line bounds: a solution that breaks a bound is warned (issue 24, --grid 12)",
-          "[line][bounds]") {
+TEST_CASE("line bounds: a solution that breaks a bound is warned (--grid 12)", "[line][bounds]") {
   // The reproduction of issue 24: at N = 12 the root has l/l0 = 1.0037 and a(0)/a0 = 1.0002 (its
   // discretisation error, V tau = 1.8e-3 a0, exceeds the distance to the bound); N = 6 stays
   // within them (a least-squares minimum, l/l0 = 0.99995).
@@ -110,7 +109,7 @@ TEST_CASE("line bounds: the sweep of the figures' 100 speeds converges at the de
   }
 }
 
-TEST_CASE("line bounds: the log-spaced sweep of issue 24 converges at the default N",
+TEST_CASE("line bounds: the paper's 100 log-spaced speeds converge at the default N",
           "[line][bounds][slow]") {
   // The paper's scene over log-spaced speeds 1e-4 ... 1e4 at N = 6: every speed converged (a
   // root or a certified least-squares minimum), never "iteration limit", "no descent step" or

@@ -1,4 +1,4 @@
-// The line theory's domain of validity (issue 6): line_domain_warnings on shapes whose a(y) is
+// The line theory's domain of validity: line_domain_warnings on shapes whose a(y) is
 // known in closed form (line_shape.hpp: a = a_ref sqrt(1 - t^2) exp(sum alpha_k T_k(2 t^2 - 1))).
 #include <algorithm>
 #include <catch2/catch.hpp>

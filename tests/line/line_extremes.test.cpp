@@ -1,4 +1,4 @@
-// The line solver at the ends of the floating-point range (issue 24): every finite scene whose
+// The line solver at the ends of the floating-point range: every finite scene whose
 // solution is representable is solved, in units of powers of two in which nothing overflows or
 // underflows (docs/theory.md, "Scaling"), and one whose solution is not throws
 // std::invalid_argument naming the quantity and the inputs (docs/errors.md). Checked through the
@@ -63,8 +63,8 @@ void check_valid(const Solution& s) {
 }  // namespace
 
 TEST_CASE(
-    "line extremes: the reproductions of issue 24 are solved, bit for bit as in ordinary "
-    "units",
+    "line extremes: scenes at the ends of the floating-point range are solved, bit for bit as "
+    "in ordinary units",
     "[line][extremes]") {
   const double two = 2;
   struct Case {

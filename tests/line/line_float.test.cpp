@@ -1,4 +1,4 @@
-// The converged flag in float (issue 24): a root is reported converged only where its error
+// The converged flag in float: a root is reported converged only where its error
 // estimate max |J^+ r| is within sqrt(eps) (docs/line-solver.md, "Stops short of a root";
 // docs/stability.md). At V tau = 0.01 a0, N = 6, float stopped at the residual's rounding floor
 // 2e-5 with b(0) 15.5% off double's and reported a root; at V tau = a0 it agrees with double.

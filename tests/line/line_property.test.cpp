@@ -1,4 +1,4 @@
-// Property test of the line solver (issue 6): random scenes, inside and outside the valid ranges.
+// Property test of the line solver: random scenes, inside and outside the valid ranges.
 // Each ends in
 //   - std::invalid_argument whose message names one of the parameters drawn invalid (and a scene
 //     drawn entirely valid is never rejected), or
@@ -223,7 +223,7 @@ void run_line_cases(int count, std::uint64_t seed, Tally& tally) {
           tally.worst_negative_p = std::max(tally.worst_negative_p, -p / mean);
         }
       }
-      // The validity warnings (issue 6): l/a(0) < 3 exactly when the aspect warning is present;
+      // The validity warnings: l/a(0) < 3 exactly when the aspect warning is present;
       // the a(y)-against-l warning only where a(y) somewhere exceeds l/3 (dense check).
       const bool short_contact = s.l() / s.a(0.0) < 3;
       const auto mentions = [&](const char* text) {

@@ -2,7 +2,7 @@
 // the answer is the cold start's, bit for bit, with a warning; a seed from which the iteration
 // stops short (one outside the equations' domain) is followed by the cold start, with a warning;
 // any other seed starts the continuation in N, so that the answer is the cold start's root to the
-// iteration's tolerance (issue 24: one answer per scene); a good seed (a neighbouring speed)
+// iteration's tolerance (one answer per scene); a good seed (a neighbouring speed)
 // saves iterations, without a warning; a seed from which no root is reached (the iteration stops
 // short of one, above the root tolerance) gives the cold start's answer, bit for bit, without a
 // warning, a least-squares minimum included.
@@ -97,7 +97,7 @@ TEST_CASE("line solver: a good seed is used, without a warning", "[line]") {
   REQUIRE(seeded.iterations < cold.iterations);  // continuation saves work
 }
 
-TEST_CASE("line solver: one answer per scene whatever the seed (issue 24)", "[line]") {
+TEST_CASE("line solver: one answer per scene whatever the seed", "[line]") {
   // N = 16, the paper's scene at V tau = a0: the cold start gives a(0) = 0.606178, l = 4.57835;
   // the iteration straight from the static closed form landed on another root of the discrete
   // equations (0.605141, 4.56323; docs/line-solver.md, "Continuation in N"). Every seed now

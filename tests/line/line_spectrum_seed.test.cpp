@@ -60,7 +60,7 @@ viscoroll::PronyRelaxation<double> rubber(double temperature) {
 
 }  // namespace
 
-TEST_CASE("line spectrum: a seed from a neighbouring speed gives the cold start's root (issue 20)",
+TEST_CASE("line spectrum: a seed from a neighbouring speed gives the cold start's root",
           "[line][spectrum]") {
   using Solver = viscoroll::LineSolver<double, viscoroll::PronyCreep<double>>;
   const Solver solver(two_term_creep(), viscoroll::LineOptions{.terms = 4});
@@ -72,10 +72,8 @@ TEST_CASE("line spectrum: a seed from a neighbouring speed gives the cold start'
   check_same(solver.solve(spectrum_scene(10.0), &near), cold);
 }
 
-TEST_CASE(
-    "line spectrum: the 12-term rubber at 0 degC, 0.01 m/s, seeded from 0.001 m/s "
-    "(issue 20)",
-    "[line][spectrum]") {
+TEST_CASE("line spectrum: the 12-term rubber at 0 degC, 0.01 m/s, seeded from 0.001 m/s",
+          "[line][spectrum]") {
   using Solver = viscoroll::LineSolver<double, viscoroll::PronyRelaxation<double>>;
   const Solver solver(rubber(0.0), viscoroll::LineOptions{.terms = 6});
   const viscoroll::LineScene<double> slow{.c1 = 20.0, .c2 = 0.5, .load = 100.0, .speed = 0.001};

@@ -1,4 +1,4 @@
-// "Only what a scene needs" (issue 5): an elastic material, V tau = 0 (or below eps a0) and the
+// "Only what a scene needs": an elastic material, V tau = 0 (or below eps a0) and the
 // glassy limit (V tau beyond ~a0/eps, or +inf) are answered by the closed forms, not by the
 // rolling solvers. The closed forms are checked against independent truth: Hertz's strip (the
 // plane, docs/theory.md (P6)) and Kalker's static line contact (docs/paper.md, "Checked by

@@ -1,6 +1,6 @@
 // The umbrella header brings in only what every scene needs: not the boundary-element reference
 // solver (whose headers need Eigen's unsupported FFT module), not the FFT, not
-// boost::multiprecision (issue 5, "Only what a scene needs"; docs/performance.md). This file
+// boost::multiprecision ("Only what a scene needs"; docs/performance.md). This file
 // includes nothing of viscoroll but the umbrella header; bem_header.test.cpp checks that the same
 // probes do see the optional parts when they are included, so these checks can fail.
 #include <viscoroll/viscoroll.hpp>

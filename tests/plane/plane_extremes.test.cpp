@@ -1,4 +1,4 @@
-// The plane solver at the ends of the floating-point range (issue 24): every finite scene whose
+// The plane solver at the ends of the floating-point range: every finite scene whose
 // solution is representable is solved, in units in which nothing overflows or underflows
 // (docs/theory.md, "Scaling"), and one whose solution is not throws std::invalid_argument naming
 // the quantity and the inputs (docs/errors.md). Checked through the exact invariance of the plane
@@ -102,8 +102,9 @@ Real peak_tolerance(Real f, Real a, Real vtau_over_a0) {
 
 }  // namespace
 
-TEST_CASE("plane extremes: the reproductions of issue 24 are solved or rejected by name",
-          "[plane][extremes]") {
+TEST_CASE(
+    "plane extremes: scenes at the ends of the floating-point range are solved or rejected by name",
+    "[plane][extremes]") {
   using S = Scene<double>;
   const double two = 2, pi = std::acos(-1.0);
   // c1 = 1e-308, load = 1e308, mu_D = 1e-308, c1 = 1e-300 with load = 1e300: 4 c (1 + f) W / C1

@@ -1,4 +1,4 @@
-// Property test of the plane solver (issue 6): random scenes, inside and outside the valid ranges.
+// Property test of the plane solver: random scenes, inside and outside the valid ranges.
 // Each ends in std::invalid_argument or in a converged solution satisfying the invariants of
 // docs/theory.md (P2)-(P7); none in NaN, a crash or a hang. Fixed seed: reproducible.
 #include <boost/math/special_functions/fpclassify.hpp>
