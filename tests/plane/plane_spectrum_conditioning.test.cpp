@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/plane/plane_solver.hpp>

@@ -35,6 +35,7 @@
 #include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
+#include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/detail/line_iteration.hpp>

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/detail/spectrum_memory.hpp>

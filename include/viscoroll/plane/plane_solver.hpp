@@ -26,6 +26,7 @@
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
+#include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
