@@ -1,5 +1,5 @@
 // The boundary-element solver for a material with a spectrum (docs/bem.md, B9-B10) in the
-// checks that issue 20 asks of every solver and that tests/plane/plane_spectrum.test.cpp makes of
+// checks asked of every solver for a spectrum and that tests/plane/plane_spectrum.test.cpp makes of
 // the plane one: two retardation times far apart give two peaks of chi against speed, and between
 // them the plateau of the intermediate modulus, the Hertz contact of the compliance (1 + f1) c;
 // the slow and fast limits of a spectrum are Hertz with the long-term and the instantaneous

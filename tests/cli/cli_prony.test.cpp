@@ -1,5 +1,5 @@
-// viscoroll-solve with a material of model "prony" (a Prony series in relaxation form, issue 20
-// item 6): the shipped prony scenes run with the bem method, and the plane and line methods solve a
+// viscoroll-solve with a material of model "prony" (a Prony series in relaxation form): the
+// shipped prony scenes run with the bem method, and the plane and line methods solve a
 // spectrum; one term equals the standard linear solid of the same relaxation form; a temperature is
 // the reference material with every time multiplied by a_T; one line per (temperature, speed);
 // --temperature overrides the scene's; a DMA file is fitted with its report (and a poor fit's

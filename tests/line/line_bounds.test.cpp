@@ -2,7 +2,7 @@
 // rolling contact"): G(y) >= 0 where 0 <= b(y) <= V tau f/(1 + f), then (B1) int a^2 dy <= that of
 // the long-term static contact; (B2) a(0) <= a0, l <= l0 and (B3) b(0) >= 0, checked by the
 // solver on every converged solution and warned when broken (line_bound_warnings); and the sweep
-// of issue 24: every speed converged or a certified least-squares minimum.
+// of the paper's 100 log-spaced speeds: every speed converged or a certified least-squares minimum.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -67,7 +67,7 @@ TEST_CASE("line bounds: the paper's scene keeps G >= 0, (B1), (B2) and (B3) at e
 }
 
 TEST_CASE("line bounds: a solution that breaks a bound is warned (--grid 12)", "[line][bounds]") {
-  // The reproduction of issue 24: at N = 12 the root has l/l0 = 1.0037 and a(0)/a0 = 1.0002 (its
+  // At N = 12 the root has l/l0 = 1.0037 and a(0)/a0 = 1.0002 (its
   // discretisation error, V tau = 1.8e-3 a0, exceeds the distance to the bound); N = 6 stays
   // within them (a least-squares minimum, l/l0 = 0.99995).
   const viscoroll::StandardLinearSolid<double> material(0.8039135086325981, 0.30003219277831694,
@@ -93,7 +93,7 @@ TEST_CASE("line bounds: a solution that breaks a bound is warned (--grid 12)", "
 
 TEST_CASE("line bounds: the sweep of the figures' 100 speeds converges at the default N",
           "[line][bounds]") {
-  // Issue 24: the paper's scene over 100 log-spaced speeds 1e-3 ... 1e3 at N = 6 (the CLI's
+  // The paper's scene over 100 log-spaced speeds 1e-3 ... 1e3 at N = 6 (the CLI's
   // default), swept as viscoroll-solve sweeps (chunks of 16, each speed seeded with its chunk's
   // last solution): every speed converged, a root or a certified least-squares minimum.
   const viscoroll::testing::PaperScene paper;

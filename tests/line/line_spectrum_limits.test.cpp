@@ -1,7 +1,7 @@
 // The line solver for a material with a spectrum (docs/theory.md section 14) in the checks that
-// issue 20 asks of every solver and that tests/plane/plane_spectrum.test.cpp makes of the plane
-// one: two retardation times far apart give two peaks of chi against speed, and between them the
-// plateau of the intermediate modulus, where the contact is the static line contact of the
+// every solver for a spectrum must pass and that tests/plane/plane_spectrum.test.cpp makes of the
+// plane one: two retardation times far apart give two peaks of chi against speed, and between them
+// the plateau of the intermediate modulus, where the contact is the static line contact of the
 // compliance (1 + f1) c; terms with equal retardation times are one term with the summed weight.
 // (One term equal to the standard linear solid's solver, and the slow and fast limits, are in
 // line_spectrum.test.cpp.)

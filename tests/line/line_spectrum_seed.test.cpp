@@ -1,6 +1,6 @@
 // The line solver for a spectrum with a seed (docs/line-solver.md, "Materials with a spectrum"):
 // the cold start first, the seed only where the cold start stops short, so that a neighbouring
-// speed's solution never decides the answer where the cold start converges. Issue 20: the 12-term
+// speed's solution never decides the answer where the cold start converges. The 12-term
 // rubber of examples/scenes/rubber_prony_bem.json at 0 degC, 0.01 m/s, seeded from 0.001 m/s as
 // viscoroll-solve's sweep does, stopped at l/a(0) = 0.69 (the cold start's root has l/a(0) = 16),
 // and on the two-term material of support/spectrum_scene.hpp the seed from V = 1 reached a root

@@ -223,7 +223,7 @@ TEST_CASE("plane: the quadrature policy only changes rounding", "[plane][quadrat
 TEMPLATE_TEST_CASE("plane: extreme speeds and creep ratios", "[plane][stiff]", float, double,
                    long double) {
   using Real = TestType;
-  // Issue 2: nothing overflows or loses digits for V tau/a0 from 1e-4 to 1e4, here with f up to
+  // Nothing overflows or loses digits for V tau/a0 from 1e-4 to 1e4, here with f up to
   // 1e4 (alpha = (1+f) a/(V tau) up to 1e8). The load is met to the moment quadrature's
   // tolerance plus the rounding of p; p >= 0 to rounding.
   const Real tol = std::max(Real(1e-12), 64 * eps<Real>());

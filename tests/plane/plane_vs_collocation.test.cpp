@@ -23,7 +23,7 @@ int terms_for(double f, double v) {
 
 TEST_CASE("plane: agrees with the independent collocation of Hunter's Eq. (2)",
           "[plane][reference]") {
-  // Issue 2 asks for 0.1%; both methods are converged to ~1e-10, so the check is much tighter:
+  // The target is 0.1%; both methods are converged to ~1e-10, so the check is much tighter:
   // 1e-8 relative (pmax_x, located by the slope root here and by Brent + slope root there: 1e-7
   // of a0).
   const double pi = std::acos(-1.0), c = 1 / (2 * pi);
