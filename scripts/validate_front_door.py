@@ -498,15 +498,22 @@ def study(args) -> int:
     return 0
 
 
+def chi_floor(row: dict) -> float:
+    """The bem's floor for chi, 1e-6 a_lt/R (chi_floor = 1e-6 C1 a_H in BemSolver::solve), from
+    the reference's a_long_term; 0 where it has none (a flat idler whose long-term contact
+    reaches the ends)."""
+    alt = row.get("ref_a_long_term")
+    return 1e-6 * alt / row["radius"] if alt else 0.0
+
+
 def add_floor(row: dict) -> None:
     """chi's error over max(|chi_ref|, 1e-6 a_lt/R): the bem's own floor for chi (chi_floor =
     1e-6 C1 a_H in BemSolver::solve), under which chi is zero to the tolerance."""
-    ec, chi_ref, alt = row.get("rel_err_chi"), row.get("chi_ref"), row.get("ref_a_long_term")
+    ec, chi_ref = row.get("rel_err_chi"), row.get("chi_ref")
     if ec is None or chi_ref is None:
         row["rel_err_chi_floor"], row["within_1pct_floor"] = None, False
         return
-    # No a_long_term (a flat idler whose long-term contact reaches the ends): no floor.
-    floor = 1e-6 * alt / row["radius"] if alt else 0.0
+    floor = chi_floor(row)
     row["rel_err_chi_floor"] = ec * abs(chi_ref) / max(abs(chi_ref), floor) if chi_ref else 0.0
     ed = row.get("rel_err_d")
     row["within_1pct_floor"] = bool(
@@ -587,8 +594,7 @@ def ref_usable(r: dict) -> bool:
     ed, ec, chi_ref = r.get("ref_rel_error_d"), r.get("ref_rel_error_chi"), r.get("chi_ref")
     if r.get("ref_converged") is not True or ed is None or ec is None or not chi_ref:
         return False
-    floor = 1e-6 * r["ref_a_long_term"] / r["radius"] if r.get("ref_a_long_term") else 0.0
-    return ed <= REF_USABLE and ec * abs(chi_ref) / max(abs(chi_ref), floor) <= REF_USABLE
+    return ed <= REF_USABLE and ec * abs(chi_ref) / max(abs(chi_ref), chi_floor(r)) <= REF_USABLE
 
 
 def report(rows: list[dict], done: int, planned: int, total: float, args) -> None:
