@@ -63,6 +63,7 @@
 
 #include "cli/auto_method.hpp"
 #include "cli/bem_record.hpp"
+#include "cli/bem_substrate.hpp"
 #include "cli/engineering.hpp"
 #include "cli/line_record.hpp"
 #include "cli/plane_record.hpp"
@@ -550,6 +551,8 @@ struct Problem {
   std::optional<double> density = std::nullopt;
   /// --strict, or the scene file's "strict": a validity breach is an error.
   bool strict = false;
+  /// The scene file's "substrate" (the half space by default): the bem method's body.
+  viscoroll::cli::SubstrateSpec substrate = {};
 };
 
 /// --oversampling, --basis, --max-iterations and --quadrature-tolerance into LineOptions (their
@@ -662,6 +665,7 @@ Problem from_scene(const SolveOptions& o) {
   check_scene_for_method(scene, *method, o.scene);
   Problem p;
   p.method = *method;
+  p.substrate = scene.substrate;
   p.grid = o.grid ? o.grid : scene.grid;
   p.threads = o.threads;
   // --setting replaces the file's "setting".
@@ -1060,8 +1064,7 @@ int run_bem(const Problem& p, Output& out) {
     return run_sweeps(
         p, p.temperatures, out, scene_at,
         [&](double temperature) {
-          return viscoroll::BemSolver<double, viscoroll::PronyRelaxation<double>>(
-              prony_at(p, temperature), options);
+          return viscoroll::cli::bem_solver(prony_at(p, temperature), options, p.substrate);
         },
         [&](double temperature, const auto& scene, const auto& s, double seconds) {
           const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
@@ -1076,7 +1079,9 @@ int run_bem(const Problem& p, Output& out) {
         });
   return run_sweeps(
       p, p.tau, out, scene_at,
-      [&](double tau) { return viscoroll::BemSolverD(material(p, tau), options); },
+      [&](double tau) {
+        return viscoroll::cli::bem_solver(material(p, tau), options, p.substrate);
+      },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
         const auto along = s.along_roller();
         out.add(with_fields({{"method", std::string("bem")},
@@ -1177,6 +1182,11 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   };
   if (!p.c2 && !p.roller) {
     for (auto& r : solve_by(Method::plane)) keep(std::move(r), vc::plane_cylinder());
+    return status;
+  }
+  if (!p.substrate.is_half_space()) {
+    for (auto& r : solve_by(Method::bem))
+      keep(std::move(r), vc::bem_instead(vc::substrate_precheck(p.substrate.describe())));
     return status;
   }
   const auto facts = validity_facts(p);

@@ -146,6 +146,11 @@ inline std::string line_accepted() {
          "warning)";
 }
 
+/// Why a scene on a layer or a bed goes to the bem: the line theory is the half space's.
+inline std::string substrate_precheck(const std::string& substrate) {
+  return "the substrate is a " + substrate + "; the line theory is the half space's";
+}
+
 /// The reason a bem record gives when the line method could not answer, `why`.
 inline std::string bem_instead(const std::string& why) { return "auto: bem (" + why + ")"; }
 

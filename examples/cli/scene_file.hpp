@@ -110,6 +110,19 @@ inline bool is_axial_profile(const RollerProfile& r) {
          std::holds_alternative<LogarithmicProfile>(r) || std::holds_alternative<TableProfile>(r);
 }
 
+/// The scene's "substrate": the body the roller presses (docs/bem.md B15-B19): "half_space" (the
+/// default), "layer" of `thickness` (m) on a rigid base, "bonded" or "frictionless", or
+/// "spring_bed" of `thickness` (the belt-conveyor model u = h p/E).
+struct SubstrateSpec {
+  std::string model = "half_space";
+  double thickness = 0;
+  std::string base = "bonded";
+
+  bool is_half_space() const { return model == "half_space"; }
+  /// "layer (6 mm, bonded)"-like words for messages.
+  std::string describe() const;
+};
+
 struct Scene {
   std::string description;
   MaterialModel material;
@@ -130,6 +143,7 @@ struct Scene {
   std::optional<double> density;
   /// "strict": a result outside its model's assumptions is an error (viscoroll-solve --strict).
   bool strict = false;
+  SubstrateSpec substrate = {};
 };
 
 /// The largest scene file read, in bytes (viscoroll::limits::scene_file_bytes).
@@ -290,6 +304,7 @@ inline std::string range_of(std::string_view key) {
       {"g", "g >= 0 (Pa, finite)"},
       {"activation_energy", "activation_energy > 0 (J/mol, finite)"},
       {"temperature", "a finite temperature (degrees Celsius) above the shift law's limit"},
+      {"thickness", "thickness > 0 (m, finite)"},
   };
   for (const auto& [name, range] : ranges)
     if (name == key) return std::string(range);
@@ -307,6 +322,31 @@ inline bool poisson(double x) { return x > -1 && x <= 0.5; }
 inline bool finite(double x) { return std::isfinite(x); }
 
 /// The shift law at `key` of `r` ("material.shift").
+/// "substrate": {"model": ..., "thickness": ..., "base": ...}; thickness for a layer or a bed
+/// only, base for a layer only.
+inline SubstrateSpec read_substrate(const ObjectReader& top) {
+  const ObjectReader r(top.source(), top.at("substrate"), "substrate",
+                       {"model", "thickness", "base"}, "substrate");
+  SubstrateSpec s;
+  s.model = r.string("model");
+  if (s.model != "half_space" && s.model != "layer" && s.model != "spring_bed")
+    r.fail("substrate.model = \"" + s.model + "\" is not one of half_space, layer, spring_bed");
+  if (s.is_half_space()) {
+    if (r.has("thickness") || r.has("base"))
+      r.fail("substrate.model = \"half_space\" takes no thickness or base");
+    return s;
+  }
+  s.thickness = r.number("thickness", positive);
+  if (r.has("base")) {
+    if (s.model != "layer")
+      r.fail("substrate.base is a layer's (bonded or frictionless), not a spring_bed's");
+    s.base = r.string("base");
+    if (s.base != "bonded" && s.base != "frictionless")
+      r.fail("substrate.base = \"" + s.base + "\" is not one of bonded, frictionless");
+  }
+  return s;
+}
+
 inline ShiftSpec read_shift(const ObjectReader& r, std::string_view key) {
   const std::string path = r.name(key);
   const ObjectReader head(r.source(), r.at(key), path, {}, path);
@@ -660,7 +700,7 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
   }
   const ObjectReader top(source, root, "",
                          {"description", "material", "roller", "load", "speeds", "method", "grid",
-                          "setting", "temperature", "tolerance", "density", "strict"},
+                          "setting", "temperature", "tolerance", "density", "strict", "substrate"},
                          "the scene");
   Scene scene;
   if (top.has("description")) scene.description = top.string("description");
@@ -720,6 +760,7 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
     scene.setting = parse_line_setting(setting);
     if (!scene.setting) top.fail("setting = \"" + setting + "\" is not one of default, fast");
   }
+  if (top.has("substrate")) scene.substrate = scene_detail::read_substrate(top);
   if (top.has("temperature")) {
     const auto* prony = std::get_if<PronyModel>(&scene.material);
     if (!prony || !prony->shift)
@@ -763,6 +804,12 @@ inline double roller_tilt(const RollerProfile& r) {
       r);
 }
 
+inline std::string SubstrateSpec::describe() const {
+  if (is_half_space()) return "half_space";
+  return model + " (thickness " + scene_detail::shortest(thickness) + " m" +
+         (model == "layer" ? ", " + base : std::string()) + ")";
+}
+
 /// Checks what depends on the method: the cylinder is the plane method's roller only; a roller
 /// of finite length (crowned, logarithmic, table; tilted or not) is the bem's and the line
 /// method's, on any material (LineSolver::solve(LineProfileScene), of a spectrum by
@@ -774,6 +821,16 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
     throw std::invalid_argument("viscoroll-solve: " + source + ": " + message);
   };
   const std::string m = method_name(method);
+  // A layer or a bed is the bem's: the plane and line theories are the half space's.
+  if (!scene.substrate.is_half_space() && (method == Method::line || method == Method::plane))
+    fail("substrate.model = \"" + scene.substrate.model +
+         "\" is solved by the bem method only: the " + m +
+         " method's theory is the half space's (give \"method\": \"bem\" or \"auto\")");
+  if (!scene.substrate.is_half_space() && method == Method::automatic &&
+      std::holds_alternative<CylinderProfile>(scene.roller))
+    fail("substrate.model = \"" + scene.substrate.model +
+         "\" is solved by the bem method only, which takes an \"ellipsoid\" or a roller of finite "
+         "length, not the plane method's \"cylinder\"");
   if (is_axial_profile(scene.roller)) {
     const std::string profile = "roller.profile = \"" + roller_profile_name(scene.roller) + "\"";
     if (method == Method::plane)

@@ -75,6 +75,9 @@ struct SceneSpec {
   std::optional<double> density;
   /// A scene file's "strict": a validity breach is an error in solve() and sweep().
   bool strict = false;
+  /// The body the roller presses (a scene file's "substrate", Scene(substrate=...)): the half
+  /// space by default; a layer or a spring bed is the bem method's.
+  cli::SubstrateSpec substrate = {};
   std::string source = "Scene";  ///< starts the messages of method-dependent checks
   /// A Prony material's temperature (degrees Celsius): its shift law's t_ref by default; NaN
   /// without a shift law (the material is its reference).

@@ -255,6 +255,7 @@ int check_for_method(const SceneSpec& scene, Method method, std::optional<long> 
   else
     s.roller = cli::EllipsoidProfile{scene.roller.c1, scene.roller.c2};
   if (!grid) s.grid = scene.grid;
+  s.substrate = scene.substrate;
   try {
     cli::check_scene_for_method(s, to_cli(method), scene.source);
   } catch (const std::invalid_argument& e) {
@@ -400,6 +401,7 @@ SceneSpec from_cli(const cli::Scene& in, const std::string& source) {
   out.tolerance = in.tolerance;
   out.density = in.density;
   out.strict = in.strict;
+  out.substrate = in.substrate;
   out.description = in.description;
   out.source = source;
   return out;
@@ -422,6 +424,23 @@ nlohmann::json to_json(const py::handle& value) {
 }
 
 /// A roller of finite length, `profile` ("crowned", "logarithmic", "table") with `keys` (a scene
+/// Scene(substrate=...): a dict of the scene file's "substrate" keys (model, thickness, base; a
+/// None value is a key left out), read by the scene file's reader, with its messages.
+cli::SubstrateSpec substrate_from(const py::dict& keys) {
+  namespace sd = cli::scene_detail;
+  nlohmann::json object = nlohmann::json::object();
+  for (const auto& [key, value] : keys)
+    if (!value.is_none()) object[py::str(key).cast<std::string>()] = to_json(value);
+  const nlohmann::json top = {{"substrate", object}};
+  try {
+    return sd::read_substrate(sd::ObjectReader("viscoroll", top, "", {}, "the scene"));
+  } catch (const std::invalid_argument& e) {
+    const std::string message = reader_message(e.what());
+    throw std::invalid_argument(message.starts_with("viscoroll: ") ? message
+                                                                   : "viscoroll: " + message);
+  }
+}
+
 /// file's keys of that profile, docs/rollers.md; a None value is a key left out), read by the
 /// scene file's reader and validated by the library as Scene.from_json's: the same ranges and
 /// messages, naming the key ("viscoroll: radius = -1 is outside the valid range radius > 0").
@@ -598,6 +617,7 @@ cli::ValidityFacts validity_facts(const SceneSpec& scene) {
 /// ellipsoid's c2/c1, then line_precheck on the line theory's long-term contact and a roller's
 /// axial_curvature_precheck), or empty.
 std::string auto_precheck(const SceneSpec& scene) {
+  if (!scene.substrate.is_half_space()) return cli::substrate_precheck(scene.substrate.describe());
   std::string why = scene.roller.axial ? std::string()
                                        : cli::ellipsoid_precheck(scene.roller.c1, scene.roller.c2);
   if (why.empty()) {
@@ -1357,7 +1377,8 @@ PYBIND11_MODULE(_viscoroll, m) {
   // Scene.
   py::class_<SceneSpec>(
       m, "Scene",
-      "Scene(material, roller, load, speeds=None, temperature=None, density=None)\n\n"
+      "Scene(material, roller, load, speeds=None, temperature=None, density=None, "
+      "substrate=None)\n\n"
       "One problem: a material (StandardLinearSolid, Elastic or Prony), a roller (Ellipsoid,\n"
       "Cylinder, Crowned, Logarithmic or Table), the load (> 0; total for line and bem, per unit "
       "length for plane) and\n"
@@ -1366,11 +1387,17 @@ PYBIND11_MODULE(_viscoroll, m) {
       "time of its spectrum times a_T); default the law's t_ref.\n"
       "density (> 0; kg/m^3 with SI units): the rubber's, for the check that rolling is\n"
       "quasi-static (V at most 0.1 of the shear-wave speed); None: not checked.\n"
+      "substrate: the body the roller presses, the scene file's keys as a dict: None or\n"
+      "{'model': 'half_space'}; {'model': 'layer', 'thickness': h, 'base': 'bonded'} (or\n"
+      "'frictionless'), a layer of the material on a rigid base; {'model': 'spring_bed',\n"
+      "'thickness': h}, the conveyor model u = h p/E. A layer or a bed is the bem method's\n"
+      "(the auto method picks it); d is then measured from the base.\n"
       "Scene.from_json(path) reads a scene file of the command line (docs/cli.md).")
       .def(py::init([](const vp::Material& material, const vp::Roller& roller, double load,
                        const std::optional<py::object>& speeds, std::optional<double> temperature,
-                       std::optional<double> density) {
+                       std::optional<double> density, const std::optional<py::dict>& substrate) {
              SceneSpec s;
+             if (substrate) s.substrate = substrate_from(*substrate);
              s.material = material.spec;
              s.roller = roller.spec;
              viscoroll::detail::require_positive("load", load);
@@ -1383,7 +1410,8 @@ PYBIND11_MODULE(_viscoroll, m) {
              return s;
            }),
            py::arg("material"), py::arg("roller"), py::arg("load"), py::arg("speeds") = py::none(),
-           py::arg("temperature") = py::none(), py::arg("density") = py::none())
+           py::arg("temperature") = py::none(), py::arg("density") = py::none(),
+           py::arg("substrate") = py::none())
       .def_static(
           "from_json",
           [](const py::object& path, std::optional<double> temperature) {
@@ -1431,6 +1459,18 @@ PYBIND11_MODULE(_viscoroll, m) {
           "The material.")
       .def_property_readonly(
           "roller", [](const SceneSpec& s) { return roller_object(s.roller); }, "The roller.")
+      .def_property_readonly(
+          "substrate",
+          [](const SceneSpec& s) {
+            py::dict d;
+            d["model"] = s.substrate.model;
+            if (!s.substrate.is_half_space()) d["thickness"] = s.substrate.thickness;
+            if (s.substrate.model == "layer") d["base"] = s.substrate.base;
+            return d;
+          },
+          "The body the roller presses, as the scene file's \"substrate\": {'model': "
+          "'half_space'}, {'model': 'layer', 'thickness': h, 'base': 'bonded' or "
+          "'frictionless'} or {'model': 'spring_bed', 'thickness': h}.")
       .def_readonly("load", &SceneSpec::load, "The load.")
       .def_property_readonly(
           "speeds", [](const SceneSpec& s) { return as_array(s.speeds); },
@@ -1486,6 +1526,12 @@ PYBIND11_MODULE(_viscoroll, m) {
         if (s.tolerance) out += ", tolerance=" + shortest(*s.tolerance);
         if (s.density) out += ", density=" + shortest(*s.density);
         if (s.strict) out += ", strict=True";
+        if (!s.substrate.is_half_space()) {
+          out += ", substrate={'model': '" + s.substrate.model +
+                 "', 'thickness': " + shortest(s.substrate.thickness);
+          if (s.substrate.model == "layer") out += ", 'base': '" + s.substrate.base + "'";
+          out += "}";
+        }
         if (s.material.prony && !std::isnan(s.temperature))
           out += ", temperature=" + shortest(s.temperature);
         return out + ")";

@@ -15,6 +15,7 @@
 
 #include "bindings.hpp"
 #include "cli/bem_record.hpp"
+#include "cli/bem_substrate.hpp"
 #include "cli/roller_profile.hpp"
 
 namespace viscoroll::python {
@@ -88,11 +89,11 @@ BemOptions options_for(int grid, double tolerance) {
 }
 
 Solver make_solver(const SceneSpec& scene, int grid, double tolerance) {
-  return Solver(material_of(scene), options_for(grid, tolerance));
+  return cli::bem_solver(material_of(scene), options_for(grid, tolerance), scene.substrate);
 }
 
 SpectrumSolver make_spectrum_solver(const SceneSpec& scene, int grid, double tolerance) {
-  return SpectrumSolver(prony_at(scene), options_for(grid, tolerance));
+  return cli::bem_solver(prony_at(scene), options_for(grid, tolerance), scene.substrate);
 }
 
 /// f(profile) with the library profile of the scene's roller of finite length in its tilt.

@@ -1,6 +1,6 @@
 // The layer's surface factor T (substrate/layer_factor.hpp, docs/theory.md section 19): the closed
-// forms (L2), (L3) against an independent solve of Navier's equations through the layer, the thin
-// and thick limits (L4), and the evaluation (L5) at every x.
+// forms (H2), (H3) against an independent solve of Navier's equations through the layer, the thin
+// and thick limits (H4), and the evaluation (H5) at every x.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -53,7 +53,7 @@ TEST_CASE("layer factor: the closed forms solve Navier's equations through the l
 
 TEST_CASE("layer factor: thin and thick limits", "[substrate]") {
   const double eps = std::numeric_limits<double>::epsilon();
-  // (L4) with its next terms, docs/theory.md: bonded, T = lead x (1 + C x^2 + E x^4 + O(x^6)),
+  // (H4) with its next terms, docs/theory.md: bonded, T = lead x (1 + C x^2 + E x^4 + O(x^6)),
   // (1 + a x^2 + b x^4)/(1 + g x^2 + h x^4) with a = k/(3 (1 - 2 nu)), b = a/5,
   // g = (k + 1)/(4 (1 - nu)^2), h = k/(12 (1 - nu)^2), k = 3 - 4 nu: C = a - g,
   // E = b - h - g C; incompressible,
@@ -70,7 +70,7 @@ TEST_CASE("layer factor: thin and thick limits", "[substrate]") {
       CHECK(std::abs(layer_factor(x, nu, LayerBase::frictionless) / (x / 2) - 1) <=
             2 * std::pow(x, 4) / 45 + 16 * eps);
     }
-    // Incompressible and bonded, where the naive (L2) would cancel to eps/x^2.
+    // Incompressible and bonded, where the naive (H2) would cancel to eps/x^2.
     const double incompressible = layer_factor(x, 0.5, LayerBase::bonded) / (2 * x * x * x / 3);
     CHECK(std::abs(incompressible - 1 + 1.8 * x * x) <= 2 * std::pow(1.8 * x * x, 2) + 16 * eps);
   }
@@ -84,7 +84,7 @@ TEST_CASE("layer factor: thin and thick limits", "[substrate]") {
 }
 
 TEST_CASE("layer factor: continuous and rising across the switch at x = 1", "[substrate]") {
-  // The two evaluations of (L2) meet at x = 1 to rounding, and T rises with x (a thicker layer
+  // The two evaluations of (H2) meet at x = 1 to rounding, and T rises with x (a thicker layer
   // is more compliant).
   for (const double nu : {0.0, 0.3, 0.5}) {
     const double below = layer_factor(std::nextafter(1.0, 0.0), nu, LayerBase::bonded);

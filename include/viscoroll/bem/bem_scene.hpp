@@ -221,14 +221,16 @@ struct BemSolution {
   BemGrid<Real> grid;
   std::vector<Real> pressure;  ///< cell pressures, flat index i + nx j (grid.index)
   std::vector<Real> gap;  ///< g = u - d + h at the cell centres (0 in contact to the tolerance)
-  Real d;                 ///< penetration (Eq. 27)
+  Real d;                 ///< penetration (Eq. 27); on a layer or bed, from its base (B15)
   Real a0;                ///< a(0): half width of the contact on y = 0 (B12, sub-cell)
   Real b0;                ///< b(0): offset of its centre ahead of the roller (Eq. 29)
   Real l;                 ///< half length of the contact (B12, sub-cell)
   Real chi;               ///< rolling friction C1 int x p / int p (Eq. 51)
   Real load;              ///< hx hy sum p (equals the scene's load to the tolerance)
-  HertzContact<Real> long_term;  ///< the static Hertz contact of the long-term compliance
-  int contact_cells;             ///< cells with p > 0
+  /// The static Hertz contact of the long-term compliance (on a substrate, of that compliance
+  /// times the sizing factor of (B19): the estimate that sized the grid)
+  HertzContact<Real> long_term;
+  int contact_cells;      ///< cells with p > 0
   bool converged;         ///< every claimed quantity holds to the tolerance (else see reason)
   std::string reason;     ///< "converged", or why not
   int iterations;         ///< active-set iterations

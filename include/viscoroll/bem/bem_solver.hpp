@@ -14,12 +14,15 @@
 
 #include <algorithm>
 #include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/roots.hpp>
 #include <chrono>
 #include <cmath>
 #include <complex>
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -37,6 +40,7 @@
 #include <viscoroll/material/prony.hpp>  // compiled mode: PronyRelaxation<double>
 #include <viscoroll/material/standard_linear_solid.hpp>
 #include <viscoroll/numerics/active_set.hpp>
+#include <viscoroll/substrate/substrate.hpp>
 
 namespace viscoroll {
 
@@ -58,10 +62,26 @@ class BemSolver {
  public:
   using Solution = BemSolution<Real>;
   using Complex = std::complex<Real>;
+  using W = bem::coefficient_real_t<Real>;
 
   explicit BemSolver(Material material, BemOptions options = {})
       : material_(std::move(material)), options_(options) {
     options_.validate();
+  }
+
+  /// The solver on a substrate other than the half space (core/concepts.hpp, Substrate): a Layer,
+  /// a SpringBed or a user's body, with the material's Poisson's ratio `material.nu()`. Its
+  /// kernel (bem/substrate_kernel.hpp, (B15)) is tabulated here, once.
+  template <Substrate S>
+  requires std::same_as<typename S::real_type, Real> && requires(const Material& m) {
+    { m.nu() } -> std::convertible_to<Real>;
+  }
+  BemSolver(Material material, BemOptions options, const S& substrate)
+      : material_(std::move(material)), options_(options) {
+    options_.validate();
+    if constexpr (S::kind != SubstrateKind::half_space)
+      substrate_ = std::make_shared<const bem::SubstrateKernel<W>>(
+          bem::substrate_kernel<W>(substrate, W(material_.nu())));
   }
 
   const Material& material() const { return material_; }
@@ -181,18 +201,60 @@ class BemSolver {
     return state;
   }
 
+  /// (B18): a local bed's contact, exactly. Its rows are independent and its operator is
+  /// triangular along x (a cell sinks under its own pressure and, through the memory of Eq. (2),
+  /// the pressures ahead of it): for a penetration d, the cells from the front back take
+  ///   p_i = max(0, (d - h_i - sum_{k > i} K(i - k, 0) p_k) / K(0, 0)),
+  /// the complementarity solution of the row; the load grows with d, and TOMS 748 meets it to
+  /// the scalar's precision. The active-set iteration then starts from the right set and
+  /// confirms it in one solve (the primal-dual iteration alone can cycle here: the memory
+  /// couplings are positive, the operator is not an M-matrix).
+  static numerics::ActiveSetState<Real> local_bed_state(
+      const BemGrid<Real>& grid, const bem::InfluenceTable<Real, Quadrature>& table,
+      const std::vector<Real>& h, Real load, Real d_scale) {
+    const std::size_t n = grid.size();
+    std::vector<Real> p(n);
+    const Real k0 = table(0, 0), area = grid.hx * grid.hy;
+    const auto sweep = [&](Real d) {
+      Real total = 0;
+      for (int j = 0; j < grid.ny; ++j)
+        for (int i = grid.nx - 1; i >= 0; --i) {
+          Real u = 0;
+          for (int k = i + 1; k < grid.nx; ++k) u += table(i - k, 0) * p[grid.index(k, j)];
+          const Real v = std::max(Real(0), (d - h[grid.index(i, j)] - u) / k0);
+          p[grid.index(i, j)] = v;
+          total += v;
+        }
+      return total * area - load;
+    };
+    Real hi = d_scale;
+    for (int k = 0; k < 200 && sweep(hi) < 0; ++k) hi *= 2;
+    Real lo = 0;
+    std::uintmax_t iterations = 200;
+    const auto root = boost::math::tools::toms748_solve(
+        sweep, lo, hi, sweep(lo), sweep(hi),
+        boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2), iterations);
+    const Real d = (root.first + root.second) / 2;
+    sweep(d);
+    numerics::ActiveSetState<Real> state{.p = p, .d = d, .active = std::vector<char>(n, 0)};
+    for (std::size_t q = 0; q < n; ++q) state.active[q] = p[q] > 0;
+    return state;
+  }
+
   /// The contact of (B11): the active-set iteration (numerics/active_set.hpp) on the gap
   /// g = u - d + h of the cell centres (Eqs. 13, 27) under the load hx hy sum p = P, its load row
   /// and gap tolerance in units of the long-term Hertz penetration.
   Solution iterate(const BemScene<Real>& scene, const BemGrid<Real>& grid,
                    const HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
                    const std::vector<Complex>& symbol, const std::vector<PronyTerm<Real>>& terms,
-                   Real compliance, int length_exponent, const Solution* start) const {
+                   Real compliance, int length_exponent, const Solution* start,
+                   const bem::InfluenceTable<Real, Quadrature>* local = nullptr) const {
     std::vector<Real> h(grid.size());
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i)
         h[grid.index(i, j)] = scene.gap_profile(grid.x(i), grid.y(j));
-    auto state = initial_state(scene, grid, hertz, terms, compliance, start);
+    auto state = local != nullptr ? local_bed_state(grid, *local, h, scene.load, hertz.d)
+                                  : initial_state(scene, grid, hertz, terms, compliance, start);
     // GMRES' tolerance, but no tighter than the scalar allows (32 eps).
     const Real tol =
         std::max(Real(options_.gmres_tolerance), 32 * std::numeric_limits<Real>::epsilon());
@@ -403,6 +465,10 @@ class BemSolver {
     std::vector<PronyTerm<Real>> terms;  ///< (f_k, V tau_k) in the units
     int length, displacement, pressure;  ///< binary exponents of the units
     std::string inputs;                  ///< the inputs, for an error message
+    W thickness = 0;                     ///< the substrate's thickness in the units
+    /// The substrate's factor T(kappa/a) at the long-term contact it gives (B19): the compliance
+    /// that sizes the grid and starts the iteration is (1 + f) c times it; 1 on the half space.
+    Real sizing = 1;
   };
 
   Scaled scaled(const BemScene<Real>& scene) const {
@@ -451,6 +517,10 @@ class BemSolver {
                                   -displacement);
       };
     }
+    if (substrate_) {
+      out.thickness = times_power_of_two(substrate_->thickness, -length);
+      out.sizing = sizing_factor(out);
+    }
     const Binary<Real> bv = binary(scene.speed);
     for (const auto& t : bem::memory_terms_of(material_)) {
       const Binary<Real> bt = binary(t.tau);
@@ -470,9 +540,32 @@ class BemSolver {
     return {2 * m + 1, 2 * m + 1, (across > 0 ? across : hertz.a) / Real(n), hertz.b / Real(n)};
   }
 
-  /// Hertz's long-term contact (B8) in the units of `u`.
+  /// Hertz's long-term contact (B8) in the units of `u`, on the compliance (1 + f) c times the
+  /// substrate's sizing factor (B19).
   static HertzContact<Real> hertz_in_units(const Scaled& u, Real creep_ratio) {
-    return hertz_contact(u.scene.c1, u.scene.c2, (1 + creep_ratio) * u.compliance, u.scene.load);
+    return hertz_contact(u.scene.c1, u.scene.c2, (1 + creep_ratio) * u.compliance * u.sizing,
+                         u.scene.load);
+  }
+
+  /// (B19): the factor F = T(kappa / min(a, b)) of the Hertz contact (a, b) on the compliance
+  /// (1 + f) c F, kappa = 2, by bisection in ln F (T(kappa/a(F)) falls as F grows).
+  Real sizing_factor(const Scaled& u) const {
+    using std::exp;
+    using std::log;
+    const Real lt = (1 + material_.creep_ratio()) * u.compliance;
+    const auto g = [&](Real ln_f) {
+      const auto hz = hertz_contact(u.scene.c1, u.scene.c2, lt * exp(ln_f), u.scene.load);
+      const W t = substrate_->surface_factor(W(2) / W(std::min(hz.a, hz.b)), u.thickness);
+      return Real(log(t)) - ln_f;
+    };
+    Real lo = 0, hi = 0;
+    while (g(lo) < 0 && lo > -600) lo -= 8;
+    while (g(hi) > 0 && hi < 600) hi += 8;
+    for (int k = 0; k < 80 && hi - lo > Real(1e-6); ++k) {
+      const Real mid = (lo + hi) / 2;
+      (g(mid) < 0 ? hi : lo) = mid;
+    }
+    return exp((lo + hi) / 2);
   }
 
   /// A start solution in the caller's units, in the units of `u` (or null).
@@ -530,6 +623,7 @@ class BemSolver {
 
   Material material_;
   BemOptions options_;
+  std::shared_ptr<const bem::SubstrateKernel<W>> substrate_;  ///< null: the half space
 };
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
@@ -554,14 +648,16 @@ auto BemSolver<Real, Material, Quadrature>::solve_on(const Scaled& u, int n, con
   if (u.scene.profile) validate_profile(u.scene, grid);
   const auto terms = effective_terms(grid, u.scene.speed, u.terms);
   const Real c = u.compliance;
-  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, u.scene.speed,
-                                                    options_.threads);
+  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, u.scene.speed, options_.threads,
+                                                    substrate_.get(), u.thickness);
   const bem::ConvolutionOperator<Real> op(table);
-  const std::vector<Complex> symbol = bem::preconditioner_symbol(grid, op, c, terms, u.scene.speed);
+  const std::vector<Complex> symbol =
+      bem::preconditioner_symbol(grid, op, c, terms, u.scene.speed, substrate_.get(), u.thickness);
   const double setup = std::chrono::duration<double>(clock::now() - t0).count();
   const auto seed = start_in_units(start, u);
-  Solution sol =
-      iterate(u.scene, grid, hertz, op, symbol, terms, c, u.length, seed ? &*seed : nullptr);
+  const bool local = substrate_ && substrate_->kind == SubstrateKind::local;
+  Solution sol = iterate(u.scene, grid, hertz, op, symbol, terms, c * u.sizing, u.length,
+                         seed ? &*seed : nullptr, local ? &table : nullptr);
   to_caller_units(sol, u);
   sol.elements = n;
   sol.seconds_setup = setup;

@@ -26,6 +26,7 @@
 #include <viscoroll/bem/bem_scene.hpp>
 #include <viscoroll/bem/fft_backend.hpp>
 #include <viscoroll/bem/rectangle_influence.hpp>
+#include <viscoroll/bem/substrate_kernel.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/material/generalized_maxwell.hpp>
@@ -67,9 +68,12 @@ std::vector<PronyTerm<typename M::real_type>> memory_terms_of(const M& m) {
 /// 0 <= dj < ny (even in dj), including the compliance c; memory lengths L_k = V tau_k. The memory
 /// coefficients (B4)-(B5) are integrated by the rule Quadrature (MemoryPanelRule by default);
 /// two or more terms share their panels' nodes (MemoryRows; docs/bem.md, "Many memory terms").
-///   - InfluenceTable(grid, c, terms, V, threads = 1): the table of the grid's offsets for the
-///     memory terms (f_k, tau_k) at speed V, computed in coefficient_real_t<Real> and rounded
-///     once, its rows shared among `threads` threads (the same table for any count);
+///   - InfluenceTable(grid, c, terms, V, threads = 1, substrate = nullptr, thickness = 0): the
+///     table of the grid's offsets for the memory terms (f_k, tau_k) at speed V, computed in
+///     coefficient_real_t<Real> and rounded once, its rows shared among `threads` threads (the
+///     same table for any count); on a substrate (substrate_kernel.hpp) of `thickness` in the
+///     grid's units, a body's correction (B16)-(B17) is added and a local bed's rows (B18)
+///     replace the half space's;
 ///   - operator()(di, dj): the coefficient of offset (di, dj);
 ///   - nx(), ny(): the grid's cell counts.
 template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
@@ -77,16 +81,22 @@ requires NodalQuadratureRule<Quadrature, coefficient_real_t<Real>>
 class InfluenceTable {
  public:
   InfluenceTable(const BemGrid<Real>& grid, Real compliance,
-                 const std::vector<PronyTerm<Real>>& terms, Real speed, int threads = 1)
+                 const std::vector<PronyTerm<Real>>& terms, Real speed, int threads = 1,
+                 const SubstrateKernel<coefficient_real_t<Real>>* substrate = nullptr,
+                 coefficient_real_t<Real> thickness = 0)
       : nx_(grid.nx),
         ny_(grid.ny),
-        k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)) {
+        k_(static_cast<std::size_t>(2 * grid.nx - 1) * static_cast<std::size_t>(grid.ny)),
+        substrate_(substrate != nullptr && substrate->kind != SubstrateKind::half_space ? substrate
+                                                                                        : nullptr),
+        thickness_(thickness) {
     // Memory lengths L_k = V tau_k; those of at least hx/1024, when two or more, share their
     // panels' nodes (MemoryRows): a shorter one would add more shared panels per step,
     // log2(hx/(16 L)), than its own memory_row costs (about 6).
     using W = coefficient_real_t<Real>;
     std::vector<W> shared;
     for (const auto& t : terms) {
+      if (substrate_ != nullptr && substrate_->kind == SubstrateKind::local) break;
       const W length = W(speed) * W(t.tau);
       if (length > 0 && length >= W(grid.hx) / 1024) shared.push_back(length);
     }
@@ -132,10 +142,39 @@ class InfluenceTable {
     const int m = nx_ - 1;
     const W hx = W(grid.hx), hy = W(grid.hy);
     const W y = W(j) * hy;
+    const auto store = [&](const std::vector<W>& total) {
+      for (int i = -m; i <= m; ++i)
+        k_[static_cast<std::size_t>(i + m) +
+           static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
+            Real(W(compliance) * total[static_cast<std::size_t>(i + m)]);
+    };
+    if (substrate_ != nullptr && substrate_->kind == SubstrateKind::local) {
+      // (B18): the bed's own rows, no half space.
+      const W l = substrate_->local_length / substrate_->thickness * thickness_;
+      std::vector<W> total = local_row(m, j, hx, l, W(0));
+      for (const auto& t : terms) {
+        const std::vector<W> mem = local_row(m, j, hx, l, W(speed) * W(t.tau));
+        for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
+      }
+      store(total);
+      return;
+    }
+    // (B16)-(B17): a body adds its correction to the half space's rows.
+    std::optional<BodyCorrection<W>> body;
+    if (substrate_ != nullptr) {
+      W longest = 0;
+      for (const auto& t : terms) longest = std::max(longest, W(speed) * W(t.tau));
+      body.emplace(*substrate_->radial, thickness_, hx, hy, m, y, longest);
+    }
     std::vector<W> row(static_cast<std::size_t>(2 * m + 1));
     for (int i = -m; i <= m; ++i)
       row[static_cast<std::size_t>(i + m)] = rectangle_influence(W(i) * hx, y, hx, hy);
     std::vector<W> total = row;
+    std::vector<W> elastic_correction;
+    if (body) {
+      elastic_correction = body->elastic(row);
+      for (std::size_t q = 0; q < total.size(); ++q) total[q] += elastic_correction[q];
+    }
     std::vector<std::vector<W>> shared;
     if (shared_) shared = (*shared_)(y);
     std::size_t next_shared = 0;
@@ -148,15 +187,19 @@ class InfluenceTable {
                                  : in_shared   ? std::move(shared[next_shared++])
                                                : memory_row<W, Quadrature>(m, y, hx, hy, length);
       for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * mem[q];
+      if (body) {
+        const std::vector<W> correction =
+            length > 0 ? body->memory(length, mem) : elastic_correction;
+        for (std::size_t q = 0; q < total.size(); ++q) total[q] += W(t.f) * correction[q];
+      }
     }
-    for (int i = -m; i <= m; ++i)
-      k_[static_cast<std::size_t>(i + m) +
-         static_cast<std::size_t>(2 * m + 1) * static_cast<std::size_t>(j)] =
-          Real(W(compliance) * total[static_cast<std::size_t>(i + m)]);
+    store(total);
   }
 
   int nx_, ny_;
   std::vector<Real> k_;
+  const SubstrateKernel<coefficient_real_t<Real>>* substrate_;
+  coefficient_real_t<Real> thickness_;
   std::optional<MemoryRows<coefficient_real_t<Real>, Quadrature>> shared_;
 };
 
@@ -278,15 +321,17 @@ class ConvolutionOperator {
   std::shared_ptr<const std::vector<Complex>> kernel_;
 };
 
-/// (B11): the inverse continuum symbol |k| / (2 pi c (1 + sum f_k / (1 - i k_x V tau_k))) on
+/// (B11): the inverse continuum symbol |k| / (2 pi c T(|k|) (1 + sum f_k / (1 - i k_x V tau_k))) on
 /// the padded grid, |k| the discrete (finite-difference) wavenumber; the zero mode gets the
 /// value of the lowest non-zero one. c is the instantaneous compliance, (f_k, tau_k) the memory
-/// terms, V the speed; ConvolutionOperator::apply_symbol applies it.
+/// terms, V the speed, T the substrate's factor (H1) at thickness `thickness` in the grid's units
+/// (1 without a substrate); ConvolutionOperator::apply_symbol applies it.
 template <RealScalar Real>
-std::vector<std::complex<Real>> preconditioner_symbol(const BemGrid<Real>& grid,
-                                                      const ConvolutionOperator<Real>& op, Real c,
-                                                      const std::vector<PronyTerm<Real>>& terms,
-                                                      Real speed) {
+std::vector<std::complex<Real>> preconditioner_symbol(
+    const BemGrid<Real>& grid, const ConvolutionOperator<Real>& op, Real c,
+    const std::vector<PronyTerm<Real>>& terms, Real speed,
+    const SubstrateKernel<coefficient_real_t<Real>>* substrate = nullptr,
+    coefficient_real_t<Real> thickness = 0) {
   using Complex = std::complex<Real>;
   using std::sin;
   using std::sqrt;
@@ -303,6 +348,9 @@ std::vector<std::complex<Real>> preconditioner_symbol(const BemGrid<Real>& grid,
       const Real k = std::max(sqrt(qx * qx + qy * qy), kmin);
       Complex memory(1);
       for (const auto& t : terms) memory += t.f / Complex(1, -kx * speed * t.tau);
+      // A substrate's factor T (H1) at the same wavenumber.
+      if (substrate != nullptr)
+        memory *= Real(substrate->surface_factor(coefficient_real_t<Real>(k), thickness));
       s[static_cast<std::size_t>(m) +
         static_cast<std::size_t>(nfxh) * static_cast<std::size_t>(n)] = k / (2 * pi * c * memory);
     }

@@ -105,6 +105,42 @@ concept NodalQuadratureRule = QuadratureRule<Q, Real> && requires {
   { Q::points } -> std::convertible_to<int>;
 };
 
+/// What a substrate's surface response is made of, which decides how a solver represents it.
+enum class SubstrateKind {
+  half_space,  ///< the homogeneous half space: surface_factor is 1 at every q
+  body,        ///< an elastic body whose surface_factor tends to 1 as q -> inf (a layer)
+  local,       ///< a local (Winkler) bed: surface_factor is q times a constant length
+};
+
+/// Substrate policy: the body the roller presses, described by its surface response relative to
+/// the half space's of the same material (docs/theory.md section 19). With Poisson's ratio
+/// constant in time, a pressure p cos(q x) on the surface deflects it by
+///   w = (1 - nu)/(mu |q|) T(|q|) p                                              (H1)
+/// at every instant, with T of the geometry alone, so the material's memory (Eq. 2) and the body
+/// separate: the solvers apply the material's creep to the substrate's elastic kernel.
+///
+/// A substrate S provides
+///   - `typename S::real_type`, a RealScalar;
+///   - `static constexpr SubstrateKind kind`;
+///   - `real_type surface_factor(real_type q, real_type nu) const`: T(q) at the wavenumber
+///     q >= 0 (1/length) for Poisson's ratio nu. For a `body`, T(q) - 1 must decay at least as
+///     fast as exp(-q thickness()) as q -> inf, and T(0) >= 0 is the ratio of its long-wave
+///     compliance to the half space's (0 on a rigid base); for a `local` bed T(q) = q l with
+///     a constant l >= 0;
+///   - `real_type thickness() const`: the length over which the body differs from a half space
+///     (its layer's thickness; ignored for the half space), > 0 for a body or a bed.
+///
+/// Models: HalfSpace, Layer (bonded or frictionless on a rigid base), SpringBed
+/// (substrate/substrate.hpp); a user's own body is one class with these members
+/// (tests/substrate/user_substrate.test.cpp).
+template <class S>
+concept Substrate = RealScalar<typename S::real_type> &&
+    requires(const S& s, typename S::real_type q) {
+  { S::kind } -> std::convertible_to<SubstrateKind>;
+  { s.surface_factor(q, q) } -> std::convertible_to<typename S::real_type>;
+  { s.thickness() } -> std::convertible_to<typename S::real_type>;
+};
+
 namespace detail {
 /// The one memory term (f, tau) of a SingleTimeModel, or (0, 0) for a model without one.
 template <SingleTimeModel M>
