@@ -5,7 +5,10 @@
 // file in SI units (--scene FILE.json, examples/cli/scene_file.hpp). For each tau, each speed is
 // solved by viscoroll::sweep on --threads threads: in chunks of 16 in the given order, line and
 // bem continuing from the previous converged solution of the chunk (any thread count, same result).
-// --method plane: Hunter's plane problem (load per unit length, c2 ignored).
+// --method plane: Hunter's plane problem (load per unit length, c2 ignored); a scene file's layer
+// or spring bed ("substrate") by PlaneSubstrateSolver to --tolerance (or the file's "tolerance"),
+// default 1e-4 in a, d and chi, each line carrying d (from the base), terms, tolerance, the error
+// estimates, substrate and, when not converged, reason.
 // --method line: the line-contact solver (--grid N the Chebyshev terms, default 6; --setting fast
 // the fast setting, LineOptions::fast() on FastLineSolverD, 5 terms) for the
 // ellipsoid or a roller of finite length (crowned, logarithmic, table; tilted or not) on any
@@ -22,10 +25,11 @@
 // chunks running at once (bem_table_threads). Warnings of either method also go to stderr, one
 // per line; they do not change the exit status.
 // A scene's material of model "prony" (a Prony series in relaxation form, or fitted from a DMA
-// file, with an optional WLF or Arrhenius shift) is solved by PlaneSolver, LineSolver or BemSolver
-// over PronyRelaxation<double> at each temperature (--temperature, else the scene's, else t_ref)
-// and each speed, each line carrying temperature and a_T in place of tau and vtau (and the
-// spectrum's active_terms in plane and line).
+// file, with an optional WLF or Arrhenius shift) is solved by PlaneSolver (on a layer or a spring
+// bed PlaneSubstrateSolver), LineSolver or BemSolver over PronyRelaxation<double> at each
+// temperature (--temperature, else the scene's, else t_ref) and each speed, each line carrying
+// temperature and a_T in place of tau and vtau (and the spectrum's active_terms in plane on the
+// half space and in line).
 // Every record carries after chi the rolling resistance F = chi W, the power loss F V and the
 // energy per revolution F 2 pi R (cli/engineering.hpp; per unit length for the plane method).
 #include <spawn.h>
@@ -67,6 +71,7 @@
 #include "cli/engineering.hpp"
 #include "cli/line_record.hpp"
 #include "cli/plane_record.hpp"
+#include "cli/plane_substrate.hpp"
 #include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/solve_options.hpp"
@@ -545,13 +550,14 @@ struct Problem {
   bool fast = false;
   /// The rolling radius of energy_per_revolution: the scene file's `radius`, else 1/c1.
   double radius = 0;
-  /// --tolerance (bem), else the scene file's "tolerance": BemOptions::tolerance.
+  /// --tolerance, else the scene file's "tolerance": BemOptions::tolerance, or on a layer or a
+  /// spring bed the plane method's PlaneSubstrateOptions::tolerance.
   std::optional<double> tolerance = std::nullopt;
   /// The scene file's "density" (kg/m^3): the quasi-static check (core/validity.hpp, (V4)).
   std::optional<double> density = std::nullopt;
   /// --strict, or the scene file's "strict": a validity breach is an error.
   bool strict = false;
-  /// The scene file's "substrate" (the half space by default): the bem method's body.
+  /// The scene file's "substrate" (the half space by default): the bem and plane methods' body.
   viscoroll::cli::SubstrateSpec substrate = {};
 };
 
@@ -652,13 +658,16 @@ void set_prony(Problem& p, const viscoroll::cli::PronyModel& m,
 Problem from_scene(const SolveOptions& o) {
   using namespace viscoroll::cli;
   Scene scene = parse_scene(read_scene_file(o.scene), o.scene);
-  // No method given: the auto method; for the cylinder, the plane method it has.
+  // No method given: the auto method; for the cylinder on the half space, the plane method it
+  // has (a cylinder on a layer or a bed stays auto, whose result says why it is the plane's).
   std::optional<Method> method = o.method ? o.method : scene.method;
   if (!method) method = Method::automatic;
-  if (*method == Method::automatic && std::holds_alternative<CylinderProfile>(scene.roller))
+  const bool cylinder = std::holds_alternative<CylinderProfile>(scene.roller);
+  if (*method == Method::automatic && cylinder && scene.substrate.is_half_space())
     method = Method::plane;
   if (o.grid) scene.grid.reset();
-  if (o.grid && *method == Method::automatic)
+  if (o.tolerance) scene.tolerance.reset();  // checked in main() against the method's range
+  if (o.grid && *method == Method::automatic && !cylinder)
     throw std::invalid_argument(
         "viscoroll-solve: --grid needs --method line or bem (the auto method picks line or bem "
         "per result, each at its own default)");
@@ -842,7 +851,70 @@ Record with_fields(Record head, const Record& fields) {
   return head;
 }
 
+/// The plane method's relative tolerance in a, d and chi on a layer or a spring bed
+/// (PlaneSubstrateOptions::tolerance, docs/plane-substrate.md (Q13)): --tolerance (or the
+/// scene's), else cli::plane_substrate_tolerance, 1e-4.
+double plane_tolerance(const Problem& p) {
+  return p.tolerance.value_or(viscoroll::cli::plane_substrate_tolerance);
+}
+
+/// The plane method on the scene's layer or spring bed: PlaneSubstrateSolver of the material at
+/// each tau (a prony material: each temperature) to plane_tolerance, its speeds swept as the
+/// half space's (no seed: each solve starts from its own first Chebyshev level); the records'
+/// fields cli::plane_substrate_fields.
+int run_plane_substrate(const Problem& p, Output& out) {
+  const double tolerance = plane_tolerance(p);
+  const std::string substrate = p.substrate.describe();
+  const viscoroll::PlaneSubstrateOptions options =
+      viscoroll::cli::plane_substrate_options(tolerance);
+  const auto scene_at = [&](double speed) {
+    return viscoroll::PlaneScene<double>{.c1 = p.c1, .load = p.load, .speed = speed};
+  };
+  const auto fields = [&](const auto& s, double speed, double seconds) {
+    return viscoroll::cli::plane_substrate_fields<Record>(s, substrate, tolerance, duty(p, speed),
+                                                          seconds);
+  };
+  return viscoroll::cli::visit_plane_body(p.substrate, [&](const auto& body) {
+    if (p.prony)
+      return run_sweeps(
+          p, p.temperatures, out, scene_at,
+          [&](double temperature) {
+            return viscoroll::PlaneSubstrateSolver(prony_at(p, temperature), body, options);
+          },
+          [&](double temperature, const auto& scene, const auto& s, double seconds) {
+            const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
+            out.add(with_fields({{"method", std::string("plane")},
+                                 {"temperature", temperature},
+                                 {"a_T", a_t},
+                                 {"speed", scene.speed}},
+                                fields(s, scene.speed, seconds)));
+            if (!s.converged)
+              out.note("viscoroll-solve: plane solution for " +
+                       temperature_label(p, temperature, scene.speed) +
+                       " did not converge: " + s.reason);
+          });
+    return run_sweeps(
+        p, p.tau, out, scene_at,
+        [&](double tau) {
+          return viscoroll::PlaneSubstrateSolver(material(p, tau), body, options);
+        },
+        [&](double tau, const auto& scene, const auto& s, double seconds) {
+          out.add(with_fields({{"method", std::string("plane")},
+                               {"tau", tau},
+                               {"speed", scene.speed},
+                               {"vtau", scene.speed * tau}},
+                              fields(s, scene.speed, seconds)));
+          if (!s.converged)
+            out.note("viscoroll-solve: plane solution for " + label(p, tau, scene.speed) +
+                     " did not converge: " + s.reason);
+        });
+  });
+}
+
+/// The plane method: Hunter's closed form (PlaneSolver) on the half space, PlaneSubstrateSolver
+/// on a scene file's layer or spring bed (run_plane_substrate).
 int run_plane(const Problem& p, Output& out) {
+  if (!p.substrate.is_half_space()) return run_plane_substrate(p, out);
   if (p.prony)
     return run_sweeps(
         p, p.temperatures, out,
@@ -1149,10 +1221,11 @@ std::vector<std::string> scene_breaches(const Problem& p) {
                                         compliance, p.load, p.c1);
 }
 
-/// The auto method (cli/auto_method.hpp): the plane method for a cylinder; else the line method
-/// where its theory applies (line_precheck), each of its results standing unless
-/// line_rejection finds a reason, the bem method (at its default tolerance) for the others.
-/// Every result carries method_reason.
+/// The auto method (cli/auto_method.hpp): the plane method for a cylinder (on a layer or a spring
+/// bed PlaneSubstrateSolver, at plane_tolerance); else the bem for a layer or a bed, and on the
+/// half space the line method where its theory applies (line_precheck), each of its results
+/// standing unless line_rejection finds a reason, the bem method (at its default tolerance) for
+/// the others. Every result carries method_reason.
 int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
   namespace vc = viscoroll::cli;
   SolveOptions quiet = options;  // the methods' own results go nowhere until chosen
@@ -1181,7 +1254,11 @@ int run_auto(const Problem& p, Output& out, const SolveOptions& options) {
     out.add(std::move(r));
   };
   if (!p.c2 && !p.roller) {
-    for (auto& r : solve_by(Method::plane)) keep(std::move(r), vc::plane_cylinder());
+    const std::string reason =
+        p.substrate.is_half_space()
+            ? vc::plane_cylinder()
+            : vc::plane_substrate_cylinder(p.substrate.describe(), plane_tolerance(p));
+    for (auto& r : solve_by(Method::plane)) keep(std::move(r), reason);
     return status;
   }
   if (!p.substrate.is_half_space()) {
@@ -1245,10 +1322,23 @@ int main(int argc, char** argv) {
         if (given)
           throw std::invalid_argument(std::string("viscoroll-solve: ") + key +
                                       " is valid only with --method line or auto");
-    if (options.tolerance && problem.method != Method::bem && problem.method != Method::automatic)
-      throw std::invalid_argument(
-          "viscoroll-solve: --tolerance is valid only with --method bem or auto (the plane "
-          "method is exact to rounding; the line method's error is its theory's: docs/cli.md)");
+    // The cylinder (no c2, no roller of finite length): the plane method's roller.
+    const bool cylinder = !problem.c2 && !problem.roller;
+    if (options.tolerance) {
+      const bool plane_substrate =
+          viscoroll::cli::solves_plane_substrate(problem.substrate.model, problem.method, cylinder);
+      if (!plane_substrate && problem.method != Method::bem && problem.method != Method::automatic)
+        throw std::invalid_argument(
+            "viscoroll-solve: --tolerance is valid only with --method bem or auto, or plane on a "
+            "scene file's layer or spring bed (the plane method on the half space is exact to "
+            "rounding; the line method's error is its theory's: docs/cli.md)");
+      if (!viscoroll::cli::tolerance_in_range(*options.tolerance, plane_substrate))
+        throw std::invalid_argument(
+            "viscoroll-solve: --tolerance = " +
+            viscoroll::cli::scene_detail::shortest(*options.tolerance) +
+            " is outside the valid range " +
+            viscoroll::cli::tolerance_range("--tolerance", plane_substrate));
+    }
     if (!options.profile_out.empty() && problem.method == Method::automatic)
       throw std::invalid_argument(
           "viscoroll-solve: --profile-out needs --method line or bem (the auto method picks one "
@@ -1257,8 +1347,7 @@ int main(int argc, char** argv) {
       throw std::invalid_argument(
           "viscoroll-solve: --profile-out is valid only with --method line or bem (the contact "
           "along the roller: docs/cli.md)");
-    // The auto method on a cylinder given by options answers by the plane method: its table.
-    const bool cylinder = !problem.c2 && !problem.roller;
+    // The auto method on a cylinder answers by the plane method: its table.
     Output out(
         options, problem.method == Method::automatic && cylinder ? Method::plane : problem.method,
         (problem.prony ? problem.temperatures.size() : problem.tau.size()) * problem.speeds.size());

@@ -13,6 +13,7 @@ packages=(
   clang libclang-rt-14-dev     # libFuzzer target (scripts/fuzz.sh)
   pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
   python3-pytest python3-matplotlib        # its tests and examples
+  python3-venv python3-wheel               # pip install . into a venv (docs/python.md)
 )
 
 missing=()

@@ -1,8 +1,9 @@
 // The auto method (docs/cli.md, "The auto method"), shared by viscoroll-solve and the Python
 // bindings: a scene is solved by the line method where its theory applies and its answer stands,
 // by the bem method (to its default tolerance, 1% in d and chi) otherwise; a cylinder by the
-// plane method, the only one it has. The rules, from the measured model errors (docs/theory.md
-// section 18):
+// plane method, the only one it has (on a layer or a spring bed PlaneSubstrateSolver, to its
+// tolerance); any other roller on a layer or a bed by the bem. The rules, from the measured model
+// errors (docs/theory.md section 18):
 //   - before any solve, the ellipsoid needs c2 < 8 e^-3 c1 (the line theory's domain), and the
 //     line theory a slender long-term contact, l0/a0 >= 3.6 (V3: its error in d is below
 //     0.13 (a0/l)^2, 1% there), that the line theory finds inside the roller and ending at least
@@ -61,6 +62,15 @@ void add_end_hint(Record& record, const ValidityFacts& facts) {
 /// The reason a plane record gives for a cylinder (the auto method's only choice there).
 inline std::string plane_cylinder() {
   return "auto: plane (a cylinder: the plane problem, exact to rounding)";
+}
+
+/// The reason a plane record gives for a cylinder on a layer or a spring bed, `substrate` (its
+/// SubstrateSpec::describe()): the plane problem on that body (PlaneSubstrateSolver,
+/// docs/plane-substrate.md), to the relative `tolerance` in a, d and chi.
+inline std::string plane_substrate_cylinder(const std::string& substrate, double tolerance) {
+  return "auto: plane (a cylinder on a " + substrate +
+         ": the plane problem on the substrate, to the tolerance " +
+         scene_detail::shortest(tolerance) + " in a, d and chi)";
 }
 
 /// Why the line method does not apply to the ellipsoid of curvatures `c1` across and `c2` along
@@ -146,7 +156,8 @@ inline std::string line_accepted() {
          "warning)";
 }
 
-/// Why a scene on a layer or a bed goes to the bem: the line theory is the half space's.
+/// Why a scene on a layer or a bed goes to the bem (a roller other than the cylinder, which the
+/// plane method answers): the line theory is the half space's.
 inline std::string substrate_precheck(const std::string& substrate) {
   return "the substrate is a " + substrate + "; the line theory is the half space's";
 }

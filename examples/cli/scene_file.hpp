@@ -110,9 +110,10 @@ inline bool is_axial_profile(const RollerProfile& r) {
          std::holds_alternative<LogarithmicProfile>(r) || std::holds_alternative<TableProfile>(r);
 }
 
-/// The scene's "substrate": the body the roller presses (docs/bem.md B15-B19): "half_space" (the
-/// default), "layer" of `thickness` (m) on a rigid base, "bonded" or "frictionless", or
-/// "spring_bed" of `thickness` (the belt-conveyor model u = h p/E).
+/// The scene's "substrate": the body the roller presses (docs/bem.md B15-B19,
+/// docs/plane-substrate.md): "half_space" (the default), "layer" of `thickness` (m) on a rigid
+/// base, "bonded" or "frictionless", or "spring_bed" of `thickness` (the belt-conveyor model
+/// u = h p/E). The bem method solves it, and the plane method for a cylinder.
 struct SubstrateSpec {
   std::string model = "half_space";
   double thickness = 0;
@@ -136,8 +137,10 @@ struct Scene {
   std::optional<LineSetting> setting;
   /// The top level's "temperature" (degrees Celsius): a prony material with a shift only.
   std::vector<double> temperatures;
-  /// "tolerance": the bem method's relative accuracy in d and chi (BemOptions::tolerance;
-  /// viscoroll-solve --tolerance replaces it).
+  /// "tolerance": the bem method's relative accuracy in d and chi (BemOptions::tolerance), or the
+  /// plane method's on a layer or a spring bed in a, d and chi (PlaneSubstrateOptions::tolerance);
+  /// read in either range, checked against the method's by check_scene_for_method
+  /// (viscoroll-solve --tolerance replaces it).
   std::optional<double> tolerance;
   /// "density" (kg/m^3): the rubber's, for the quasi-static check (core/validity.hpp, (V4)).
   std::optional<double> density;
@@ -298,7 +301,10 @@ inline std::string range_of(std::string_view key) {
       {"load", "load > 0 (N; N/m for the plane method; finite)"},
       {"speeds", "speed >= 0 (m/s, finite)"},
       {"grid", "1 <= grid <= 64 (line), 2 <= grid <= 512 (bem)"},
-      {"tolerance", "0 (one grid) or 1e-4 <= tolerance <= 0.5 (bem: relative, in d and chi)"},
+      {"tolerance",
+       "0 (one grid) or 1e-4 <= tolerance <= 0.5 (bem: relative, in d and chi), or "
+       "64 eps = 1.4e-14 <= tolerance <= 0.1 (plane on a layer or a spring bed: relative, in a, d "
+       "and chi)"},
       {"density", "density > 0 (kg/m^3, finite)"},
       {"g_inf", "g_inf > 0 (Pa, finite)"},
       {"g", "g >= 0 (Pa, finite)"},
@@ -742,11 +748,10 @@ inline Scene parse_scene(std::string_view text, const std::string& source) {
     scene.grid = grid.get<long>();
   }
   if (top.has("tolerance")) {
-    const double tol = top.number("tolerance", [](double x) { return x >= 0 && x <= 0.5; });
-    if (!(tol == 0 || tol >= 1e-4))
-      top.fail("tolerance = " + scene_detail::shortest(tol) + " is outside the valid range " +
-               scene_detail::range_of("tolerance"));
-    scene.tolerance = tol;
+    // Either method's range here; the method's own in check_scene_for_method.
+    scene.tolerance = top.number("tolerance", [](double x) {
+      return tolerance_in_range(x, false) || tolerance_in_range(x, true);
+    });
   }
   if (top.has("density")) scene.density = top.number("density", scene_detail::positive);
   if (top.has("strict")) {
@@ -815,22 +820,21 @@ inline std::string SubstrateSpec::describe() const {
 /// method's, on any material (LineSolver::solve(LineProfileScene), of a spectrum by
 /// docs/theory.md (RP5)); the line method needs a slender
 /// contact (0 < c2 < 8 e^-3 c1, LineScene::validate), the bem method 1e-10 <= c2/c1 <= 1e10
-/// (BemScene::validate); the file's grid, its method's range.
+/// (BemScene::validate); a layer or a spring bed is the bem's and the plane method's
+/// (PlaneSubstrateSolver), not the line theory's; the file's grid and tolerance, their method's
+/// range (the auto method on a cylinder answers by the plane method, which takes no grid).
 inline void check_scene_for_method(const Scene& scene, Method method, const std::string& source) {
   const auto fail = [&](const std::string& message) {
     throw std::invalid_argument("viscoroll-solve: " + source + ": " + message);
   };
   const std::string m = method_name(method);
-  // A layer or a bed is the bem's: the plane and line theories are the half space's.
-  if (!scene.substrate.is_half_space() && (method == Method::line || method == Method::plane))
+  const bool cylinder = std::holds_alternative<CylinderProfile>(scene.roller);
+  // A layer or a bed is the bem's and the plane method's: the line theory is the half space's.
+  if (!scene.substrate.is_half_space() && method == Method::line)
     fail("substrate.model = \"" + scene.substrate.model +
-         "\" is solved by the bem method only: the " + m +
-         " method's theory is the half space's (give \"method\": \"bem\" or \"auto\")");
-  if (!scene.substrate.is_half_space() && method == Method::automatic &&
-      std::holds_alternative<CylinderProfile>(scene.roller))
-    fail("substrate.model = \"" + scene.substrate.model +
-         "\" is solved by the bem method only, which takes an \"ellipsoid\" or a roller of finite "
-         "length, not the plane method's \"cylinder\"");
+         "\" is solved by the bem method, and on a \"cylinder\" roller by the plane method, not by "
+         "line: the line method's theory is the half space's (give \"method\": " +
+         (cylinder ? "\"plane\" or \"auto\")" : "\"bem\" or \"auto\")"));
   if (is_axial_profile(scene.roller)) {
     const std::string profile = "roller.profile = \"" + roller_profile_name(scene.roller) + "\"";
     if (method == Method::plane)
@@ -855,7 +859,7 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
            " is outside the valid range 1e-10 <= c2/c1 <= 1e10 for the bem method (c2/c1 = " +
            scene_detail::shortest(ratio) + ")");
   }
-  if (scene.grid && method == Method::automatic)
+  if (scene.grid && method == Method::automatic && !cylinder)
     fail("grid = " + std::to_string(*scene.grid) +
          " needs a method: the auto method picks line or bem per result, each at its own "
          "default (give \"method\": \"line\" or \"bem\" with a grid)");
@@ -876,6 +880,14 @@ inline void check_scene_for_method(const Scene& scene, Method method, const std:
            " is outside the valid range 2 <= grid <= 512 for the bem method (elements per "
            "semi-axis)");
   }
+  // The tolerance of the method that takes it: the plane method's on a layer or a bed, else the
+  // bem's (the bem, the auto method off the cylinder); the others ignore it.
+  const bool plane_substrate = solves_plane_substrate(scene.substrate.model, method, cylinder);
+  if (scene.tolerance &&
+      (plane_substrate || method == Method::bem || (method == Method::automatic && !cylinder)) &&
+      !tolerance_in_range(*scene.tolerance, plane_substrate))
+    fail("tolerance = " + scene_detail::shortest(*scene.tolerance) +
+         " is outside the valid range " + tolerance_range("tolerance", plane_substrate));
 }
 
 /// The text of the scene file `path`: an error if it is missing, a directory or another file

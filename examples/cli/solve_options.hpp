@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -64,6 +65,45 @@ inline const char* method_name(Method m) {
   return "?";
 }
 
+/// The plane method on a layer or a spring bed (PlaneSubstrateSolver, docs/plane-substrate.md)
+/// doubles its Chebyshev terms from 16 until its error estimates of a, d and chi ((Q13)) meet this
+/// relative tolerance, where neither the scene nor the command line gives one. 1e-4 stops at
+/// N = 32 to 128, 0.03 to 0.55 s a solve, with a and chi within 4e-8 of the answer at 1e-6 (the
+/// estimate is about the coarser level's error; the answer is the finer level's). 1e-6 needs
+/// N = 128 to 512, 0.4 to 9 s, in the slow regime (V tau/a ~ 0.005 to 0.2: a thin layer behind the
+/// leading edge), and a many-term Prony spectrum minutes, or stops unconverged at N = 512, where
+/// 1e-4 takes seconds: docs/cli.md, "The plane method on a layer or a spring bed", which has the
+/// measurements.
+inline constexpr double plane_substrate_tolerance = 1e-4;
+
+/// Whether `method` solves a scene on `substrate_model` ("half_space", "layer", "spring_bed") by
+/// the plane method on that body: the plane method, or the auto method on a cylinder, on a layer
+/// or a spring bed. Its tolerance is PlaneSubstrateOptions::tolerance; the bem's (the bem and the
+/// auto method otherwise) BemOptions::tolerance.
+inline bool solves_plane_substrate(std::string_view substrate_model, Method method, bool cylinder) {
+  return substrate_model != "half_space" &&
+         (method == Method::plane || (method == Method::automatic && cylinder));
+}
+
+/// Whether `tolerance` is in the range of the method that takes it: the plane method on a layer
+/// or a spring bed (`plane_substrate`), 64 eps <= T <= 0.1 (PlaneSubstrateOptions::validate and
+/// the solver's 64 eps of the scalar); the bem, 0 (one grid) or 1e-4 <= T <= 0.5
+/// (BemOptions::validate).
+inline bool tolerance_in_range(double tolerance, bool plane_substrate) {
+  if (plane_substrate)
+    return tolerance >= 64 * std::numeric_limits<double>::epsilon() && tolerance <= 0.1;
+  return tolerance == 0 || (tolerance >= 1e-4 && tolerance <= 0.5);
+}
+
+/// The valid range of a tolerance written `name` ("tolerance", "T"), as tolerance_in_range
+/// decides it, for messages.
+inline std::string tolerance_range(const std::string& name, bool plane_substrate) {
+  if (plane_substrate)
+    return "64 eps = 1.4e-14 <= " + name +
+           " <= 0.1 for the plane method on a layer or a spring bed (relative, in a, d and chi)";
+  return "0 (one grid) or 1e-4 <= " + name + " <= 0.5 for the bem method (relative, in d and chi)";
+}
+
 struct SolveOptions {
   std::optional<Method> method;  ///< required without --scene; with it, overrides the file's
   double mu_d = 0, nu = 0, f = 0, c1 = 0, load = 0;
@@ -95,8 +135,11 @@ struct SolveOptions {
   /// on 6-point panels (FastLineSolverD) for a material of one relaxation time; the other line
   /// options given override it.
   std::optional<LineSetting> setting;
-  /// --tolerance T (0, or 1e-4 <= T <= 0.5): the bem method's BemOptions::tolerance, the
-  /// relative accuracy asked of d and chi, refining from --grid (default 8); none or 0: one grid.
+  /// --tolerance T: the bem method's BemOptions::tolerance (0, or 1e-4 <= T <= 0.5), the
+  /// relative accuracy asked of d and chi, refining from --grid (default 8), none or 0: one grid;
+  /// or, with the plane method on a scene file's layer or spring bed, PlaneSubstrateOptions'
+  /// (64 eps <= T <= 0.1), in a, d and chi. Parsed here in either range; main() checks the
+  /// method's (tolerance_in_range).
   std::optional<double> tolerance;
   /// --strict: a result outside its model's assumptions (core/validity.hpp) is an error, exit 2,
   /// not a warning.
@@ -280,11 +323,10 @@ inline SolveOptions parse_solve_options(const std::vector<std::string_view>& arg
   }
   if (given.count("--tolerance")) {
     const double tol = parse_number("--tolerance", given["--tolerance"]);
-    if (!(tol == 0 || (tol >= 1e-4 && tol <= 0.5)))
+    if (!(tolerance_in_range(tol, false) || tolerance_in_range(tol, true)))
       throw std::invalid_argument(
-          "viscoroll-solve: --tolerance expects 0 (one grid) or 1e-4 <= T <= 0.5 (the bem "
-          "method's relative accuracy in d and chi), got '" +
-          std::string(given["--tolerance"]) + "'");
+          "viscoroll-solve: --tolerance expects " + tolerance_range("T", false) + ", or " +
+          tolerance_range("T", true) + ", got '" + std::string(given["--tolerance"]) + "'");
     o.tolerance = tol;
   }
   if (given.count("--basis")) {

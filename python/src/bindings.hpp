@@ -1,6 +1,7 @@
-// viscoroll's Python module: what its three translation units share. module.cpp holds the
-// bindings, the scene types and the plane solver; solve_line.cpp and solve_bem.cpp the two heavy
-// solvers, each behind solve_*() and sweep_*() so that pybind11 and the solvers never meet in one
+// viscoroll's Python module: what its four translation units share. module.cpp holds the
+// bindings, the scene types and the plane solver of the half space; solve_line.cpp, solve_bem.cpp
+// and solve_plane_substrate.cpp (the plane method on a layer or a spring bed) the heavy solvers,
+// each behind solve_*() and sweep_*() so that pybind11 and the solvers never meet in one
 // translation unit. Every solve is in double precision; an elastic material is the standard linear
 // solid with f = tau = 0, as on the command line (docs/cli.md).
 #pragma once
@@ -68,7 +69,8 @@ struct SceneSpec {
   std::optional<cli::LineSetting> setting;
   std::string description;
   /// A scene file's "tolerance": the bem method's default relative accuracy in d and chi
-  /// (BemOptions::tolerance) in solve() and sweep().
+  /// (BemOptions::tolerance) in solve() and sweep(), or on a layer or a spring bed the plane
+  /// method's in a, d and chi (PlaneSubstrateOptions::tolerance).
   std::optional<double> tolerance;
   /// The rubber's density (a scene file's "density", Scene(density=...)): the quasi-static
   /// check (core/validity.hpp, (V4)); none: not checked.
@@ -76,7 +78,8 @@ struct SceneSpec {
   /// A scene file's "strict": a validity breach is an error in solve() and sweep().
   bool strict = false;
   /// The body the roller presses (a scene file's "substrate", Scene(substrate=...)): the half
-  /// space by default; a layer or a spring bed is the bem method's.
+  /// space by default; a layer or a spring bed is the bem method's, and the plane method's
+  /// (PlaneSubstrateSolver) for a cylinder.
   cli::SubstrateSpec substrate = {};
   std::string source = "Scene";  ///< starts the messages of method-dependent checks
   /// A Prony material's temperature (degrees Celsius): its shift law's t_ref by default; NaN
@@ -264,9 +267,15 @@ std::vector<SolvedPtr> sweep_seeded(const Solver& solver, const Scene& at,
       options);
 }
 
-// The solvers (module.cpp: plane; solve_line.cpp; solve_bem.cpp). `scene` was checked for the
-// method; `start` seeds the iteration (line, bem) when it is a solution of the same method.
-SolvedPtr solve_plane(const SceneSpec& scene, double speed);
+// The solvers (module.cpp: plane; solve_line.cpp; solve_bem.cpp; solve_plane_substrate.cpp).
+// `scene` was checked for the method; `start` seeds the iteration (line, bem) when it is a
+// solution of the same method.
+/// tolerance: on a layer or a spring bed PlaneSubstrateOptions::tolerance (solve_plane_substrate);
+/// the half space (Hunter's closed form) ignores it.
+SolvedPtr solve_plane(const SceneSpec& scene, double speed, double tolerance);
+/// The plane method on the scene's layer or spring bed: PlaneSubstrateSolver of its material at
+/// `tolerance` (relative, in a, d and chi), the record cli::plane_substrate_fields.
+SolvedPtr solve_plane_substrate(const SceneSpec& scene, double speed, double tolerance);
 /// fast: the line method's fast setting (LineOptions::fast(); FastLineSolverD for a material of
 /// one relaxation time). roots_only: LineOptions::least_squares off (the auto method, which takes
 /// only a root: a result that is not one stops at Levenberg-Marquardt's stop).
@@ -282,7 +291,9 @@ bool bem_cells(const Solved& solved, std::vector<double>& x, std::vector<double>
 
 // viscoroll::sweep over `speeds`; called with the GIL released.
 std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
-                                   const SweepOptions& options);
+                                   double tolerance, const SweepOptions& options);
+std::vector<SolvedPtr> sweep_plane_substrate(const SceneSpec& scene, std::span<const double> speeds,
+                                             double tolerance, const SweepOptions& options);
 std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double> speeds, int terms,
                                   bool fast, const SweepOptions& options, bool roots_only = false);
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,

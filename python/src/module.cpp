@@ -1,8 +1,9 @@
 // viscoroll's Python module `_viscoroll` (re-exported by the package `viscoroll`, docs/python.md):
 // materials, rollers, Scene (and Scene.from_json, the command line's scene reader), solve(),
-// sweep() and Result. The plane solver lives here; the line and bem solvers in solve_line.cpp and
-// solve_bem.cpp. std::invalid_argument (the library's and the scene reader's messages, naming the
-// parameter) becomes ValueError.
+// sweep() and Result. The plane solver of the half space lives here; the line and bem solvers in
+// solve_line.cpp and solve_bem.cpp, the plane solver on a layer or a spring bed in
+// solve_plane_substrate.cpp. std::invalid_argument (the library's and the scene reader's messages,
+// naming the parameter) becomes ValueError.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -139,14 +140,17 @@ PlaneSolver make_plane_solver(const SceneSpec& scene) {
 
 }  // namespace
 
-SolvedPtr solve_plane(const SceneSpec& scene, double speed) {
+SolvedPtr solve_plane(const SceneSpec& scene, double speed, double tolerance) {
+  if (!scene.substrate.is_half_space()) return solve_plane_substrate(scene, speed, tolerance);
   if (scene.material.prony)
     return solve_plane_with(PlaneSpectrumSolver(prony_at(scene)), scene, speed);
   return solve_plane_with(make_plane_solver(scene), scene, speed);
 }
 
 std::vector<SolvedPtr> sweep_plane(const SceneSpec& scene, std::span<const double> speeds,
-                                   const SweepOptions& options) {
+                                   double tolerance, const SweepOptions& options) {
+  if (!scene.substrate.is_half_space())
+    return sweep_plane_substrate(scene, speeds, tolerance, options);
   if (scene.material.prony)
     return sweep_plane_with(PlaneSpectrumSolver(prony_at(scene)), scene, speeds, options);
   return sweep_plane_with(make_plane_solver(scene), scene, speeds, options);
@@ -212,14 +216,17 @@ void check_speeds(const std::vector<double>& speeds) {
 }
 
 /// The method to use: the caller's, else the scene's, else the auto method; the auto method on a
-/// cylinder is the plane method, the only one it has (as viscoroll-solve's from_scene).
+/// cylinder on the half space is the plane method, the only one it has (as viscoroll-solve's
+/// from_scene; on a layer or a bed it stays auto, whose result says why it is the plane's).
 Method method_for(const SceneSpec& scene, const std::optional<std::string>& method) {
   Method m = Method::automatic;
   if (auto given = parse_method(method))
     m = *given;
   else if (scene.method)
     m = *scene.method;
-  return m == Method::automatic && scene.roller.cylinder ? Method::plane : m;
+  return m == Method::automatic && scene.roller.cylinder && scene.substrate.is_half_space()
+             ? Method::plane
+             : m;
 }
 
 cli::Method to_cli(Method m) {
@@ -237,12 +244,13 @@ cli::Method to_cli(Method m) {
 }
 
 /// The command line's checks of a scene against a method (the cylinder is the plane method's
-/// roller; the line method's slender contact; the bem method's c2/c1; the scene's own grid; no
-/// grid for the auto method), and the discretisation at `tolerance` (the bem's): `grid` (the
-/// caller's) wins over the scene's.
+/// roller; the line method's slender contact; the bem method's c2/c1; a layer or a bed not the
+/// line method's; the scene's own grid; no grid for the auto method but on a cylinder, which the
+/// plane method answers), and the discretisation at `tolerance` (the bem's): `grid` (the
+/// caller's) wins over the scene's. The scene's tolerance is tolerance_for's.
 int check_for_method(const SceneSpec& scene, Method method, std::optional<long> grid,
                      bool fast = false, double tolerance = 0) {
-  if (grid && method == Method::automatic)
+  if (grid && method == Method::automatic && !scene.roller.cylinder)
     throw std::invalid_argument("viscoroll: grid = " + std::to_string(*grid) +
                                 " needs method 'line' or 'bem' (the auto method picks line or "
                                 "bem per result, each at its own default)");
@@ -265,24 +273,47 @@ int check_for_method(const SceneSpec& scene, Method method, std::optional<long> 
                         tolerance);
 }
 
-/// The bem method's relative tolerance in d and chi (BemOptions::tolerance, docs/theory.md
-/// section 17): the caller's `given`, else the scene's, else 0.01 unless a grid is given (the
+/// The tolerance of the method: on a layer or a spring bed with the plane method (or the auto
+/// method on a cylinder, which answers by it), its relative tolerance in a, d and chi
+/// (PlaneSubstrateOptions::tolerance, docs/plane-substrate.md (Q13)): the caller's `given`, else
+/// the scene's, else cli::plane_substrate_tolerance (1e-4), as viscoroll-solve's plane_tolerance.
+/// Otherwise the bem method's relative tolerance in d and chi (BemOptions::tolerance,
+/// docs/theory.md section 17): `given`, else the scene's, else 0.01 unless a grid is given (the
 /// caller's or the scene's), which fixes it; as viscoroll-solve's bem_tolerance. `given` must be
-/// in BemOptions' range, with the bem or auto method.
+/// in the range of the method that takes it (the bem's: BemOptions' own check), with the bem or
+/// auto method or the plane method on a layer or a bed; the scene's, in its method's range.
 double tolerance_for(const SceneSpec& scene, std::optional<double> given, Method method,
                      std::optional<long> grid) {
+  const bool plane_substrate =
+      cli::solves_plane_substrate(scene.substrate.model, to_cli(method), scene.roller.cylinder);
   if (given) {
-    BemOptions options;
-    options.tolerance = *given;
-    options.validate();  // the library's range and message
-    if (method != Method::bem && method != Method::automatic)
-      throw std::invalid_argument(
-          std::string("viscoroll: tolerance is valid only with the bem or auto method, got "
-                      "method '") +
-          method_name(method) +
-          "' (the plane method is exact to rounding; the line method's error is its theory's)");
+    if (plane_substrate) {
+      if (!cli::tolerance_in_range(*given, true))
+        throw std::invalid_argument("viscoroll: tolerance = " + shortest(*given) +
+                                    " is outside the valid range " +
+                                    cli::tolerance_range("tolerance", true));
+    } else {
+      BemOptions options;
+      options.tolerance = *given;
+      options.validate();  // the library's range and message
+      if (method != Method::bem && method != Method::automatic)
+        throw std::invalid_argument(
+            std::string("viscoroll: tolerance is valid only with the bem or auto method, or the "
+                        "plane method on a layer or a spring bed, got method '") +
+            method_name(method) +
+            "' (the plane method on the half space is exact to rounding; the line method's "
+            "error is its theory's)");
+    }
+  } else if (scene.tolerance &&
+             (plane_substrate || method == Method::bem || method == Method::automatic) &&
+             !cli::tolerance_in_range(*scene.tolerance, plane_substrate)) {
+    // A scene file's tolerance, read in either method's range (cli::parse_scene).
+    throw std::invalid_argument(scene.source + ": tolerance = " + shortest(*scene.tolerance) +
+                                " is outside the valid range " +
+                                cli::tolerance_range("tolerance", plane_substrate));
   }
   const std::optional<double> tolerance = given ? given : scene.tolerance;
+  if (plane_substrate) return tolerance.value_or(cli::plane_substrate_tolerance);
   return tolerance.value_or(grid || scene.grid ? 0.0 : 0.01);
 }
 
@@ -640,17 +671,28 @@ int auto_grid(const SceneSpec& scene, double tolerance) {
   return discretisation(Method::bem, std::nullopt, bool(scene.material.prony), false, tolerance);
 }
 
+/// The reason of the auto method's plane result for a cylinder: on the half space
+/// cli::plane_cylinder(), on a layer or a spring bed cli::plane_substrate_cylinder at `tolerance`.
+std::string plane_reason(const SceneSpec& scene, double tolerance) {
+  return scene.substrate.is_half_space()
+             ? cli::plane_cylinder()
+             : cli::plane_substrate_cylinder(scene.substrate.describe(), tolerance);
+}
+
 /// The auto method at one speed, as viscoroll-solve's run_auto (cli/auto_method.hpp): the line
 /// method where its theory applies and its result stands, else the bem method at `tolerance`;
-/// the plane method for a cylinder. `start` seeds the method it is a result of.
+/// the plane method for a cylinder (on a layer or a spring bed at `tolerance`, the plane
+/// method's there: tolerance_for). `start` seeds the method it is a result of.
 SolvedPtr solve_auto(const SceneSpec& scene, double speed, bool fast, double tolerance,
                      const Solved* start) {
+  // The plane method takes no start, as solve(method="plane") ignores it.
+  if (scene.roller.cylinder)
+    return with_reason(solve_plane(scene, speed, tolerance), plane_reason(scene, tolerance));
   if (start && start->method() == Method::plane)
     throw std::invalid_argument(
         "viscoroll: start must be a result of the line or bem method for the auto method, got "
         "plane");
   const auto seed = [&](Method m) { return start && start->method() == m ? start : nullptr; };
-  if (scene.roller.cylinder) return with_reason(solve_plane(scene, speed), cli::plane_cylinder());
   const auto bem = [&](const std::string& why) {
     return with_reason(
         solve_bem(scene, speed, auto_grid(scene, tolerance), tolerance, seed(Method::bem)),
@@ -674,9 +716,11 @@ std::vector<SolvedPtr> sweep_auto(const SceneSpec& scene, std::span<const double
       solved[k] = with_reason(std::move(solved[k]), reason_of(k));
     return solved;
   };
-  if (scene.roller.cylinder)
-    return reasoned(sweep_plane(scene, speeds, options),
-                    [](std::size_t) { return cli::plane_cylinder(); });
+  if (scene.roller.cylinder) {
+    const std::string reason = plane_reason(scene, tolerance);
+    return reasoned(sweep_plane(scene, speeds, tolerance, options),
+                    [&](std::size_t) { return reason; });
+  }
   const auto bems = [&] {
     return sweep_bem(scene, speeds, auto_grid(scene, tolerance), tolerance, options);
   };
@@ -705,7 +749,7 @@ SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long>
   const Solved* seed = start ? start->solved.get() : nullptr;
   switch (method) {
     case Method::plane:
-      return solve_plane(scene, speed);
+      return solve_plane(scene, speed, tolerance);
     case Method::line:
       return solve_line(scene, speed, n, fast, seed);
     case Method::bem:
@@ -831,7 +875,8 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
   static const std::vector<std::pair<const char*, const char*>> docs = {
       {"method", "'plane', 'line' or 'bem': the method that answered."},
       {"method_reason",
-       "The auto method: why its method answered ('auto: line (...)', 'auto: bem (...)')."},
+       "The auto method: why its method answered ('auto: line (...)', 'auto: bem (...)', "
+       "'auto: plane (...)')."},
       {"tau", "Relaxation time (0 for an elastic material); not with a Prony material."},
       {"temperature", "Prony material: the temperature (degrees Celsius; nan without a shift)."},
       {"a_T", "Prony material: the shift factor a_T at that temperature (1 at t_ref)."},
@@ -851,11 +896,14 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"y_plus", "Upper end of the contact along the axis, +l if symmetric (line, bem)."},
       {"f0_max", "Largest load per unit length along the roller, N/m (line, bem)."},
       {"f0_max_y", "Where the load per unit length is largest, m (as f0_max)."},
-      {"d", "Penetration (line, bem)."},
+      {"d",
+       "Penetration (line, bem; plane on a layer or a spring bed). On a layer or a bed it is "
+       "measured from the rigid base (the surface far from the contact)."},
       {"a_long_term",
        "Half width at its centre of the static (V = 0) contact under the long-term modulus: "
        "plane, Hertz's strip; line, the line theory's; bem, Hertz's ellipse (an Ellipsoid) or "
-       "the line theory's (a roller of finite length); nan where the line theory has none."},
+       "the line theory's (a roller of finite length); nan where the line theory has none. Not "
+       "given by the plane method on a layer or a spring bed."},
       {"l0", "Half length of that static long-term contact (line, bem)."},
       {"d0", "Penetration of that static long-term contact (line, bem)."},
       {"chi",
@@ -875,23 +923,39 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
        "line: the line equations have a root here (False: a certified least-squares minimum)."},
       {"iterations", "Iterations (bem: active-set iterations)."},
       {"residual", "Final residual (nan where undefined)."},
-      {"terms", "line: Chebyshev terms of ln a(y) (the grid argument)."},
+      {"terms",
+       "line: Chebyshev terms of ln a(y) (the grid argument); plane on a layer or a spring bed: "
+       "the Chebyshev terms of the pressure that answered (0 on a spring bed, a closed form)."},
       {"gmres_iterations", "bem: Krylov iterations over all active-set iterations."},
       {"grid",
        "bem: elements per semi-axis of the static long-term Hertz ellipse, of the grid that "
        "answered."},
       {"cells", "bem: cells of the grid."},
-      {"tolerance", "bem: the relative tolerance asked in d and chi (0: one grid, no estimate)."},
+      {"tolerance",
+       "bem: the relative tolerance asked in d and chi (0: one grid, no estimate); plane on a "
+       "layer or a spring bed: the relative tolerance asked in a0, d and chi."},
       {"tolerance_met", "bem: the error estimates of d and chi met the tolerance."},
       {"error_d",
-       "bem with a tolerance: the estimated discretisation error of d, in d's units (nan where "
-       "not estimated: a grid resolved the contact alone)."},
-      {"error_chi", "bem with a tolerance: the estimated error of chi (absolute)."},
-      {"error_a0", "bem with a tolerance: the estimated error of a0 (absolute)."},
+       "bem with a tolerance, plane on a layer or a spring bed: the estimated discretisation "
+       "error of d, in d's units (bem: nan where not estimated, a grid resolved the contact "
+       "alone)."},
+      {"error_chi",
+       "bem with a tolerance, plane on a layer or a spring bed: the estimated error of chi "
+       "(absolute)."},
+      {"error_a0",
+       "bem with a tolerance, plane on a layer or a spring bed: the estimated error of a0 "
+       "(absolute)."},
       {"error_b0", "bem with a tolerance: the estimated error of b0 (absolute)."},
       {"error_l", "bem with a tolerance: the estimated error of l (absolute)."},
-      {"error_pmax", "bem with a tolerance: the estimated error of pmax (absolute)."},
-      {"reason", "line, bem: why the iteration stopped."},
+      {"error_pmax",
+       "bem with a tolerance, plane on a layer or a spring bed: the estimated error of pmax "
+       "(absolute; plane: reported, not held to the tolerance)."},
+      {"substrate",
+       "plane on a layer or a spring bed: the body, as 'layer (thickness 0.004 m, bonded)' or "
+       "'spring_bed (thickness 0.004 m)'."},
+      {"reason",
+       "line, bem: why the iteration stopped; plane on a layer or a spring bed: why it did not "
+       "converge (only then)."},
       {"warnings",
        "The solver's warnings and the model's validity checks that the result breaches (a list "
        "of str)."},
@@ -1013,19 +1077,23 @@ scene : Scene
 method : {"auto", "line", "plane", "bem"}, optional
     "line": the paper's 3-D line-contact theory (an Ellipsoid with c2 < 8 e^-3 c1, or a
     roller of finite length: Crowned, Logarithmic, Table);
-    "plane": Hunter's plane problem of a cylinder (an Ellipsoid's c2 is ignored);
+    "plane": Hunter's plane problem of a cylinder (an Ellipsoid's c2 is ignored); on a
+    layer or a spring bed (Scene's substrate) the plane problem on that body
+    (PlaneSubstrateSolver), to `tolerance`;
     "bem": the exact 3-D boundary-element reference (an Ellipsoid or a roller of finite
     length, tilted or not), to `tolerance`;
     "auto": the line method where its theory applies (a slender long-term contact inside the
     roller) and its result stands (converged to a root, no warning, slender, inside the
-    roller), else the bem method; the plane method for a Cylinder. Its result's method is the
-    one that answered, and method_reason says why.
+    roller), else the bem method; the plane method for a Cylinder; on a layer or a spring
+    bed the bem method, and the plane method for a Cylinder. Its result's method is the one
+    that answered, and method_reason says why.
     Default: the scene's method (a scene file's "method"), else "auto".
 grid : int, optional
     Discretisation, as viscoroll-solve --grid: line, Chebyshev terms of ln a(y), 1..64
     (default 6; 4 for a Prony material); bem, elements per semi-axis of the static long-term
     Hertz ellipse, 2..512 (default 16 on one grid; with a tolerance the first grid, default
-    8); ignored by plane; not with "auto". Default: the scene's grid, else those defaults.
+    8); ignored by plane; not with "auto" (but for a Cylinder, which it answers by the plane
+    method). Default: the scene's grid, else those defaults.
 speed : float, optional
     Rolling speed >= 0. Default: the scene's only speed (a ValueError if it has none or
     several; use sweep() for several).
@@ -1046,6 +1114,10 @@ tolerance : float, optional
     estimates of d and chi (error_d, error_chi) are within it; tolerance_met says whether
     they are. Default: the scene's tolerance, else 0.01 unless a grid is given (the call's
     or the scene's), which solves on that one grid.
+    plane on a layer or a spring bed (and auto on a Cylinder there): the relative accuracy
+    asked in a0, d and chi, 64 eps (1.4e-14)..0.1; the Chebyshev terms double from 16 until
+    the error estimates (error_a0, error_d, error_chi) are within it, else converged is
+    False with a reason. Default: the scene's tolerance, else 1e-4 (docs/cli.md).
 strict : bool, optional
     True: a result that breaches its model's assumptions (small slopes a0/R <= 0.2, a contact
     inside the roller, the line theory's slenderness, quasi-static rolling where the scene
@@ -1390,8 +1462,9 @@ PYBIND11_MODULE(_viscoroll, m) {
       "substrate: the body the roller presses, the scene file's keys as a dict: None or\n"
       "{'model': 'half_space'}; {'model': 'layer', 'thickness': h, 'base': 'bonded'} (or\n"
       "'frictionless'), a layer of the material on a rigid base; {'model': 'spring_bed',\n"
-      "'thickness': h}, the conveyor model u = h p/E. A layer or a bed is the bem method's\n"
-      "(the auto method picks it); d is then measured from the base.\n"
+      "'thickness': h}, the conveyor model u = h p/E. A layer or a bed is the bem method's,\n"
+      "and the plane method's for a Cylinder (the auto method picks them); d is then\n"
+      "measured from the base.\n"
       "Scene.from_json(path) reads a scene file of the command line (docs/cli.md).")
       .def(py::init([](const vp::Material& material, const vp::Roller& roller, double load,
                        const std::optional<py::object>& speeds, std::optional<double> temperature,
@@ -1432,7 +1505,10 @@ PYBIND11_MODULE(_viscoroll, m) {
               if (!temperature && scene.temperatures.size() == 1)
                 temperature = scene.temperatures.front();
               set_temperature(s, temperature);
-              if (s.method) check_for_method(s, *s.method, std::nullopt);
+              if (s.method) {
+                check_for_method(s, *s.method, std::nullopt);
+                tolerance_for(s, std::nullopt, method_for(s, std::nullopt), std::nullopt);
+              }
               return s;
             } catch (const std::invalid_argument& e) {
               throw std::invalid_argument(reader_message(e.what()));
@@ -1502,7 +1578,8 @@ PYBIND11_MODULE(_viscoroll, m) {
             if (!s.tolerance) return py::none();
             return py::float_(*s.tolerance);
           },
-          "The scene file's tolerance (the bem method's, relative in d and chi), or None.")
+          "The scene file's tolerance (the bem method's, relative in d and chi; on a layer or a "
+          "spring bed the plane method's, in a0, d and chi), or None.")
       .def_property_readonly(
           "density",
           [](const SceneSpec& s) -> py::object {
@@ -1588,7 +1665,7 @@ PYBIND11_MODULE(_viscoroll, m) {
       .def("f0", py::vectorize([](const Result* r, double y) { return r->solved->f0(y); }),
            py::arg("y"),
            "f0(y) -> ndarray\n\nF0(y) of Eq. (33), the strip's integral of the pseudo-pressure "
-           "(plane: F0 of Eq. 52).\nNot for bem.")
+           "(plane: F0 of Eq. 52).\nNot for bem, nor for plane on a layer or a spring bed.")
       .def(
           "cell_pressures",
           [](const Result& r) {
@@ -1612,7 +1689,8 @@ PYBIND11_MODULE(_viscoroll, m) {
         const Value* c = r.solved->find("converged");
         std::string out = std::string("Result(method='") + method_name(r.solved->method()) +
                           "', speed=" + real("speed") + ", a0=" + real("a0") + ", b0=" + real("b0");
-        if (r.solved->find("l")) out += ", l=" + real("l") + ", d=" + real("d");
+        if (r.solved->find("l")) out += ", l=" + real("l");
+        if (r.solved->find("d")) out += ", d=" + real("d");
         out += ", chi=" + real("chi") +
                ", converged=" + (c && std::get<bool>(*c) ? "True" : "False") + ")";
         return out;
@@ -1643,9 +1721,11 @@ PYBIND11_MODULE(_viscoroll, m) {
         }
         viscoroll::detail::require_non_negative("speed", v);
         SolvedPtr solved;
-        if (which == Method::bem || which == Method::automatic) {
-          // A bem solve can take minutes and cannot be stopped: Ctrl-C is answered at once and
-          // the solve ends in the background, on copies of its inputs.
+        if (which == Method::bem || which == Method::automatic ||
+            !scene.substrate.is_half_space()) {
+          // A bem solve can take minutes, a plane solve on a layer or a bed seconds, and neither
+          // can be stopped: Ctrl-C is answered at once and the solve ends in the background, on
+          // copies of its inputs.
           solved = interruptible<SolvedPtr>(
               [scene, which, grid, v, fast, tol,
                seed = start ? std::optional(*start) : std::nullopt](const std::atomic<bool>&) {
@@ -1653,8 +1733,9 @@ PYBIND11_MODULE(_viscoroll, m) {
               },
               false);
         } else {
-          // The plane and line methods take milliseconds (a line spectrum on a roller profile up
-          // to half a second): Python's handlers run when they return.
+          // The plane method on the half space and the line method take milliseconds (a line
+          // spectrum on a roller profile up to half a second): Python's handlers run when they
+          // return.
           py::gil_scoped_release release;
           solved = solve_scene(scene, which, grid, v, fast, tol, start);
         }
@@ -1697,7 +1778,7 @@ PYBIND11_MODULE(_viscoroll, m) {
               stoppable.stop = &stop;
               switch (which) {
                 case Method::plane:
-                  return sweep_plane(scene, v, stoppable);
+                  return sweep_plane(scene, v, tol, stoppable);
                 case Method::line:
                   return sweep_line(scene, v, n, fast, stoppable);
                 case Method::bem:

@@ -16,7 +16,8 @@ Rollers
     tilt=None), Logarithmic(radius=, length=, scale=, end_drop=None, tilt=None),
     Table(radius=, y=, h=, tilt=None), or Roller(profile="crowned", ...) with a scene file's keys
 Scenes
-    Scene(material=, roller=, load=, speeds=None, temperature=None, density=None),
+    Scene(material=, roller=, load=, speeds=None, temperature=None, density=None,
+    substrate=None) (substrate: a layer or a spring bed, {"model": "layer", "thickness": h}),
     Scene.from_json(path, temperature=None) (a scene file of the command line viscoroll-solve,
     docs/cli.md)
 Solving
@@ -25,7 +26,8 @@ Solving
     sweep(scene, speeds=None, method=None, grid=None, threads=None, chunk=16,
           with_results=False, setting=None, tolerance=None, strict=None) -> dict of arrays
     (setting="fast": the line method's fast setting, about 1 ms a solve, within 1% on the
-    paper's scene; tolerance: the bem's relative accuracy in d and chi, default 0.01;
+    paper's scene; tolerance: the bem's relative accuracy in d and chi, default 0.01, or on a
+    layer or a spring bed the plane method's in a0, d and chi, default 1e-4;
     strict=True: a breach of the model's assumptions raises ValueError, else it is a warning)
 Results
     Result: the command line's output fields as attributes (a0, b0, l, d, chi,

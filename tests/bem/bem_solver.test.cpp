@@ -15,6 +15,8 @@
 #include <viscoroll/material/generalized_maxwell.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+#include "support/centre_row.hpp"
+
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_bem_solver {
 
@@ -116,12 +118,7 @@ TEST_CASE("bem: a very long roller at y = 0 is the plane problem at the local lo
     scene.speed = speed;
     const auto s = solver(8, 0.3).solve(scene);
     REQUIRE(s.converged);
-    const int j0 = (s.grid.ny - 1) / 2;
-    double w = 0, moment = 0;
-    for (int i = 0; i < s.grid.nx; ++i) {
-      w += s.p(i, j0) * s.grid.hx;
-      moment += s.grid.x(i) * s.p(i, j0) * s.grid.hx;
-    }
+    const auto [w, moment] = viscoroll::testing::centre_row(s);
     const viscoroll::PlaneSolverD plane(StandardLinearSolid<double>(mu, nu, f, 0.3));
     const auto p = plane.solve(viscoroll::PlaneScene<double>{1.0, w, speed});
     INFO("V tau = " << 0.3 * speed);

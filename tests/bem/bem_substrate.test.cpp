@@ -186,6 +186,33 @@ TEST_CASE("bem substrate: a layer composes with a shifted Prony rubber and a til
   CHECK(bonded.d < half.d);
 }
 
+TEST_CASE("bem substrate: a flat roller's contact runs to its ends on a thin layer",
+          "[bem][substrate]") {
+  // A flat roller (100 mm flat, 5 mm edge radii) on a bonded cover thinner than its contact is
+  // wide: the layer shrinks the sized ellipse (B19's F < 1), but a flat roller's contact is as
+  // long as its flat part, so the grid must cover along y what the half space's covers. Sized
+  // by the shrunken ellipse in both directions the grid ended short of the flat's end and the
+  // solve failed ("contact reaches the grid boundary").
+  const Sls rubber(1e6, 0.5, 3, 1e-3);
+  const viscoroll::CrownedCylinder<double> roller(0.05, 0.1, 0.005, 0.11);
+  const auto scene = viscoroll::bem_scene(roller, rubber, 1500.0, 1.0);
+  BemOptions options;
+  options.grid = 8;
+  const BemSolver<double, Sls> layer(rubber, options, Layer<double>(0.003));
+  const auto s = layer.solve(scene);
+  CAPTURE(s.reason, s.grid.nx, s.grid.ny);
+  REQUIRE(s.converged);
+  double y_reach = 0;
+  for (int j = 0; j < s.grid.ny; ++j)
+    for (int i = 0; i < s.grid.nx; ++i)
+      if (s.p(i, j) > 0) y_reach = std::max(y_reach, std::abs(s.grid.y(j)));
+  CHECK(y_reach >= 0.05);  // the flat's end
+  const auto half_space = BemSolver<double, Sls>(rubber, options).grid_for(scene);
+  const auto sized = layer.grid_for(scene);
+  CHECK(sized.hx < half_space.hx);  // the cells of the stiffer body's narrower contact
+  CHECK(sized.hy * (sized.ny - 1) >= half_space.hy * (half_space.ny - 1) * (1 - 1e-12));
+}
+
 TEST_CASE("bem substrate: a thick layer is the half space in long double", "[bem][substrate]") {
   // The kernel in long double (RadialCorrection<long double>): chi and a(0) of a layer 1e4
   // contacts thick equal the half space's to 1e-6, as in double.

@@ -42,7 +42,7 @@ Real pi_v() {
 template <class Real>
 Real integrated_load(const HunterReference<Real>& r) {
   Real sum = 0;
-  hd::gauss_panels<Real>(Real(0), pi_v<Real>(), 64, [&](Real t, Real w) {
+  hd::gauss30_panels<Real>(Real(0), pi_v<Real>(), 64, [&](Real t, Real w) {
     sum += w * r.a * std::sin(t) * r.pressure(r.b + r.a * std::cos(t));
   });
   return sum;
@@ -307,7 +307,7 @@ TEMPLATE_TEST_CASE("Hunter reference: p >= 0 and int p dx = W", "[plane][referen
     CHECK(std::abs(r.load - sc.load) <= 16 * Real(cs.n) * eps * sc.load);
     // Rolling friction from the pressure by quadrature, not from the coefficients.
     Real moment = 0;
-    hd::gauss_panels<Real>(Real(0), pi_v<Real>(), 64, [&](Real t, Real w) {
+    hd::gauss30_panels<Real>(Real(0), pi_v<Real>(), 64, [&](Real t, Real w) {
       const Real x = r.b + r.a * std::cos(t);
       moment += w * r.a * std::sin(t) * x * r.pressure(x);
     });
@@ -339,7 +339,7 @@ double cauchy_integral(const HunterReference<double>& r, double sigma) {
   std::sort(cuts.begin(), cuts.end());
   double sum = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    hd::gauss_panels<double>(cuts[i], cuts[i + 1], 1, [&](double th, double w) {
+    hd::gauss30_panels<double>(cuts[i], cuts[i + 1], 1, [&](double th, double w) {
       const double t = std::cos(th);
       // sigma - cos(theta) without cancellation
       const double gap =
@@ -378,11 +378,11 @@ TEST_CASE("Hunter reference satisfies Eq. (2) by brute-force quadrature", "[plan
       const double eta_1 = (1 - sigma) / v;
       const double eta_end = std::min(eta_1, 40.0);
       double near = 0, far = 0;
-      hd::gauss_panels<double>(
+      hd::gauss30_panels<double>(
           0.0, eta_end, static_cast<std::int64_t>(std::ceil(eta_end / 2)),
           [&](double eta, double w) { near += w * std::exp(-eta) * slope_e(sigma + v * eta); });
       if (eta_1 < 40)
-        hd::gauss_panels<double>(0.0, 7.0, 8, [&](double t, double w) {
+        hd::gauss30_panels<double>(0.0, 7.0, 8, [&](double t, double w) {
           far += w * 2 * t * std::exp(-t * t) * slope_e(1 + v * t * t);
         });
       const double u_slope = slope_e(sigma) + cs.f * (near + std::exp(-eta_1) * far);

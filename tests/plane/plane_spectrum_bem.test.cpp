@@ -9,6 +9,8 @@
 #include <viscoroll/material/prony.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 
+#include "support/centre_row.hpp"
+
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_plane_spectrum_bem {
 
@@ -29,12 +31,7 @@ void check_long_roller(const PronyCreep<double>& m, double speed) {
   const auto s =
       bem.solve(viscoroll::BemScene<double>{.c1 = 1.0, .c2 = 1e-4, .load = 1.0, .speed = speed});
   REQUIRE(s.converged);
-  const int j0 = (s.grid.ny - 1) / 2;
-  double w = 0, moment = 0;
-  for (int i = 0; i < s.grid.nx; ++i) {
-    w += s.p(i, j0) * s.grid.hx;
-    moment += s.grid.x(i) * s.p(i, j0) * s.grid.hx;
-  }
+  const auto [w, moment] = viscoroll::testing::centre_row(s);
   const auto p = viscoroll::PlaneSolver(m).solve({.c1 = 1.0, .load = w, .speed = speed});
   INFO("terms = " << m.memory_terms().size() << ", speed = " << speed << ", a = " << p.a
                   << ", hx = " << s.grid.hx);

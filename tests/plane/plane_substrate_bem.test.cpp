@@ -7,6 +7,8 @@
 #include <viscoroll/bem/bem_solver.hpp>
 #include <viscoroll/plane/plane_substrate_solver.hpp>
 
+#include "support/centre_row.hpp"
+
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_plane_substrate_bem {
 
@@ -27,12 +29,7 @@ void check_long_roller(const Body& body, double speed, double edge) {
   const auto s =
       bem.solve(viscoroll::BemScene<double>{.c1 = 1.0, .c2 = 1e-4, .load = 1.0, .speed = speed});
   REQUIRE(s.converged);
-  const int j0 = (s.grid.ny - 1) / 2;
-  double w = 0, moment = 0;
-  for (int i = 0; i < s.grid.nx; ++i) {
-    w += s.p(i, j0) * s.grid.hx;
-    moment += s.grid.x(i) * s.p(i, j0) * s.grid.hx;
-  }
+  const auto [w, moment] = viscoroll::testing::centre_row(s);
   viscoroll::PlaneSubstrateOptions po;
   po.tolerance = 1e-6;
   const auto p = viscoroll::PlaneSubstrateSolver(m, body, po)

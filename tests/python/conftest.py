@@ -1,6 +1,9 @@
 """Fixtures of the viscoroll Python tests (run by ctest as python_tests, or by hand:
 PYTHONPATH=build/<dir>/python VISCOROLL_SOLVE=build/<dir>/bin/viscoroll-solve python3 -m pytest -q
-tests/python). The command line and panek_kalker are the references where they are built."""
+tests/python; or against a `pip install`ed viscoroll: <venv>/bin/python -m pytest tests/python from
+outside the source tree). The command line and panek_kalker are the references where they are
+built; `pip install .` builds the module only, and the tests that compare with them skip unless a
+CMake build has them (build/*/bin) or VISCOROLL_SOLVE and VISCOROLL_PANEK_KALKER name them."""
 
 import os
 import pathlib
@@ -22,6 +25,15 @@ def _program(variable, name):
     return found[0] if found else shutil.which(name) and pathlib.Path(shutil.which(name))
 
 
+def pytest_report_header(config):  # pylint: disable=unused-argument
+    """Which viscoroll the tests run against (a build's python/ directory or an install)."""
+    try:
+        import viscoroll  # pylint: disable=import-outside-toplevel
+    except ImportError as error:
+        return f"viscoroll: cannot be imported ({error})"
+    return f"viscoroll {viscoroll.__version__}: {pathlib.Path(viscoroll.__file__).parent}"
+
+
 @pytest.fixture(scope="session")
 def source_dir():
     return SOURCE_DIR
@@ -36,8 +48,9 @@ def scenes_dir():
 def viscoroll_solve():
     path = _program("VISCOROLL_SOLVE", "viscoroll-solve")
     if path is None:
-        pytest.skip("viscoroll-solve is not built (set VISCOROLL_SOLVE to its path; "
-                    "cmake --build <dir> --target viscoroll_solve)")
+        pytest.skip("viscoroll-solve, the reference, is not built (pip install builds the module "
+                    "only; cmake --build <dir> --target viscoroll_solve, or set VISCOROLL_SOLVE to "
+                    "its path)")
     return path
 
 
@@ -45,6 +58,7 @@ def viscoroll_solve():
 def panek_kalker():
     path = _program("VISCOROLL_PANEK_KALKER", "panek_kalker")
     if path is None:
-        pytest.skip("panek_kalker is not built (set VISCOROLL_PANEK_KALKER to its path; "
-                    "cmake --build <dir> --target panek_kalker)")
+        pytest.skip("panek_kalker, the reference, is not built (pip install builds the module "
+                    "only; cmake --build <dir> --target panek_kalker, or set VISCOROLL_PANEK_KALKER "
+                    "to its path)")
     return path

@@ -227,12 +227,12 @@ class BemSolver {
         }
       return total * area - load;
     };
-    Real hi = d_scale;
-    for (int k = 0; k < 200 && sweep(hi) < 0; ++k) hi *= 2;
+    Real hi = d_scale, f_hi = sweep(hi);
+    for (int k = 0; k < 200 && f_hi < 0; ++k) f_hi = sweep(hi *= 2);
     Real lo = 0;
     std::uintmax_t iterations = 200;
     const auto root = boost::math::tools::toms748_solve(
-        sweep, lo, hi, sweep(lo), sweep(hi),
+        sweep, lo, hi, sweep(lo), f_hi,
         boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2), iterations);
     const Real d = (root.first + root.second) / 2;
     sweep(d);
@@ -534,10 +534,20 @@ class BemSolver {
 
   /// The grid of `n` elements per semi-axis in the units of `u`: of the long-term Hertz ellipse,
   /// or across (x) of `across` when given (the refinement's, which sizes the cells by the contact
-  /// the grid before found).
-  BemGrid<Real> grid_in_units(const HertzContact<Real>& hertz, int n, Real across = 0) const {
+  /// the grid before found). A roller profile on a body stiffer than the half space (B19's
+  /// F < 1) keeps the cells of the sized ellipse but covers along y what the half space's grid
+  /// covers: bem_scene() sized C2 for the half space, and a profile's contact is as long as its
+  /// drop allows (a flat roller's, its flat length), not shorter by F^(1/3) as an ellipsoid's.
+  BemGrid<Real> grid_in_units(const Scaled& u, const HertzContact<Real>& hertz, int n,
+                              Real across = 0) const {
     const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
-    return {2 * m + 1, 2 * m + 1, (across > 0 ? across : hertz.a) / Real(n), hertz.b / Real(n)};
+    int my = m;
+    if (u.scene.profile && u.sizing < 1) {
+      const auto half_space = hertz_contact(
+          u.scene.c1, u.scene.c2, (1 + material_.creep_ratio()) * u.compliance, u.scene.load);
+      my = static_cast<int>(std::ceil(options_.extent * n * half_space.b / hertz.b - 1e-9));
+    }
+    return {2 * m + 1, 2 * my + 1, (across > 0 ? across : hertz.a) / Real(n), hertz.b / Real(n)};
   }
 
   /// Hertz's long-term contact (B8) in the units of `u`, on the compliance (1 + f) c times the
@@ -644,7 +654,7 @@ auto BemSolver<Real, Material, Quadrature>::solve_on(const Scaled& u, int n, con
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   const auto hertz = hertz_in_units(u, material_.creep_ratio());
-  const auto grid = grid_in_units(hertz, n, across);
+  const auto grid = grid_in_units(u, hertz, n, across);
   if (u.scene.profile) validate_profile(u.scene, grid);
   const auto terms = effective_terms(grid, u.scene.speed, u.terms);
   const Real c = u.compliance;
@@ -777,7 +787,7 @@ requires std::same_as<typename Material::real_type, Real> &&
 auto BemSolver<Real, Material, Quadrature>::grid_for(const BemScene<Real>& scene) const
     -> BemGrid<Real> {
   const Scaled u = scaled(scene);
-  BemGrid<Real> g = grid_in_units(hertz_in_units(u, material_.creep_ratio()), options_.grid);
+  BemGrid<Real> g = grid_in_units(u, hertz_in_units(u, material_.creep_ratio()), options_.grid);
   const auto inputs = [&] { return u.inputs; };
   g.hx = detail::representable(g.hx, u.length, "the cell width hx", inputs, false);
   g.hy = detail::representable(g.hy, u.length, "the cell length hy", inputs, false);

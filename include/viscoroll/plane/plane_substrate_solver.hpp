@@ -40,6 +40,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
+#include <viscoroll/plane/detail/memory_integrals.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/substrate/substrate.hpp>
 
@@ -115,112 +116,9 @@ void gauss_panel(Real lo, Real hi, G&& g) {
   }
 }
 
-/// Each 30-point panel of the memory integrals spans at most 8 of decay of e^-eta and 8 radians of
-/// the fastest Chebyshev oscillation; eta is cut at -ln(eps) + 6 (docs/hunter-collocation.md,
-/// section 4: the panel error is below 1e-46 of the integrand).
-template <class Real>
-struct MemoryQuadrature {
-  Real step_exponent = 8;
-  Real step_phase = 8;
-  Real cutoff = -std::log(static_cast<double>(std::numeric_limits<Real>::epsilon())) + 6;
-};
-
-template <class Real, class G>
-void gauss30_panels(Real lo, Real hi, std::int64_t panels, G&& g) {
-  using rule = boost::math::quadrature::gauss<Real, 30>;
-  const auto& x = rule::abscissa();
-  const auto& w = rule::weights();
-  const Real h = (hi - lo) / Real(panels);
-  for (std::int64_t k = 0; k < panels; ++k) {
-    const Real mid = lo + (Real(k) + Real(0.5)) * h, half = h / 2;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      g(mid - half * x[i], half * w[i]);
-      g(mid + half * x[i], half * w[i]);
-    }
-  }
-}
-
-template <class Real>
-std::int64_t phase_panels(Real width, int n_max, const MemoryQuadrature<Real>& q) {
-  using std::ceil;
-  return std::max<std::int64_t>(
-      1, static_cast<std::int64_t>(ceil(Real(n_max + 1) * width / q.step_phase)));
-}
-
-/// (Q6) far part: J_n(v) = int_0^inf e^-w H_n(1 + v w) dw, n < N, with 1 + v w = cosh theta,
-/// H_n(cosh theta) = e^{-(n+1) theta} (docs/hunter-collocation.md, section 4).
-template <class Real>
-std::vector<Real> tail_integrals(Real v, int n_terms, const MemoryQuadrature<Real>& q = {}) {
-  using std::acosh;
-  using std::exp;
-  using std::sinh;
-  std::vector<Real> out(static_cast<std::size_t>(n_terms), Real(0));
-  Real e_lo = 0;
-  while (e_lo < q.cutoff) {
-    const Real e_hi = std::min(q.cutoff, e_lo + q.step_exponent);
-    const Real t_lo = acosh(1 + v * e_lo), t_hi = acosh(1 + v * e_hi);
-    gauss30_panels(t_lo, t_hi, phase_panels(t_hi - t_lo, n_terms, q), [&](Real theta, Real w) {
-      const Real sh = sinh(theta / 2);
-      const Real weight = w * exp(-2 * sh * sh / v) * sinh(theta) / v;
-      const Real r = exp(-theta);
-      Real h = r;
-      for (int n = 0; n < n_terms; ++n) {
-        out[static_cast<std::size_t>(n)] += weight * h;
-        h *= r;
-      }
-    });
-    e_lo = e_hi;
-  }
-  return out;
-}
-
-/// (Q6): m_n(s) = int_0^inf e^-eta H_n(s + v eta) d eta at s = cos(phi_s), by the offset delta of
-/// s + v eta = cos(phi_s - delta) up to the contact's leading edge and e^-eta_1 J_n(v) beyond it
-/// (docs/hunter-collocation.md, section 4).
-template <class Real>
-std::vector<Real> memory_integrals(Real phi_s, Real v, const std::vector<Real>& tail,
-                                   const MemoryQuadrature<Real>& q = {}) {
-  using std::acos;
-  using std::cos;
-  using std::exp;
-  using std::sin;
-  const int n_terms = static_cast<int>(tail.size());
-  std::vector<Real> out(tail.size(), Real(0));
-  const Real s = cos(phi_s);
-  const Real half_sin = sin(phi_s / 2);
-  const Real eta_1 = 2 * half_sin * half_sin / v;
-  const bool reaches_edge = eta_1 <= q.cutoff;
-  const Real e_max = reaches_edge ? eta_1 : q.cutoff;
-  const auto delta_of = [&](Real e) {
-    if (e <= 0) return Real(0);
-    if (reaches_edge && e >= eta_1) return phi_s;
-    return phi_s - acos(std::min(Real(1), s + v * e));
-  };
-  Real e_lo = 0;
-  while (e_lo < e_max) {
-    const Real e_hi = std::min(e_max, e_lo + q.step_exponent);
-    const Real d_lo = delta_of(e_lo), d_hi = delta_of(e_hi);
-    gauss30_panels(d_lo, d_hi, phase_panels(d_hi - d_lo, n_terms, q), [&](Real delta, Real w) {
-      const Real eta = 2 * sin(phi_s - delta / 2) * sin(delta / 2) / v;
-      const Real phi = phi_s - delta;
-      const Real cos_phi = cos(phi), sin_phi = sin(phi);
-      const Real weight = w * exp(-eta) * sin_phi / v;
-      Real t = cos_phi, t_sin = sin_phi;  // T_{n+1}(cos phi) = cos((n+1) phi) by rotation
-      for (int n = 0; n < n_terms; ++n) {
-        out[static_cast<std::size_t>(n)] += weight * t;
-        const Real next = t * cos_phi - t_sin * sin_phi;
-        t_sin = t_sin * cos_phi + t * sin_phi;
-        t = next;
-      }
-    });
-    e_lo = e_hi;
-  }
-  if (reaches_edge) {
-    const Real damp = exp(-eta_1);
-    for (std::size_t n = 0; n < out.size(); ++n) out[n] += damp * tail[n];
-  }
-  return out;
-}
+using plane_memory::memory_integrals;
+using plane_memory::MemoryQuadrature;  // (Q6): plane/detail/memory_integrals.hpp
+using plane_memory::tail_integrals;
 
 /// J_k(x), k = 0..n_max, x > 0: above x = n_max + 1 by the upward recurrence from J_0 and J_1;
 /// below it by Miller's backward recurrence J_{k-1} = (2k/x) J_k - J_{k+1} normalised by
