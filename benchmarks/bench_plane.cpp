@@ -1,5 +1,5 @@
 // One plane (Hunter) solution: a, b, G and chi (docs/theory.md (P5), (P7)); the pressure at a
-// point (Eq. 35) and the peak search, separately. Target (issue 2): a solution under 100 us.
+// point (Eq. 35) and the peak search, separately (docs/performance.md, "1. Plane solver").
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -988,7 +988,7 @@ using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
 /// spans about as much as a 12-point one (the panel width 2d/sinh(ln(4096/tol)/2n) of
 /// docs/theory.md section 7 is about d for n = 6 and caps at the interval for n = 12), so it needs
 /// about half the nodes: the same errors against the converged solution at the 100 speeds of
-/// docs/performance.md ("The fast setting"), 1.5-1.7 times faster (0.75-1.25 ms a cold solve of
+/// docs/performance.md ("The fast setting"), 1.5-1.7 times faster (0.72-1.26 ms a cold solve of
 /// the paper's scene).
 using FastLineSolverD = LineSolver<double, StandardLinearSolid<double>, GaussLegendre<double, 6>>;
 
