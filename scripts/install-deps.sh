@@ -14,6 +14,9 @@ packages=(
   pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
   python3-pytest python3-matplotlib        # its tests and examples
   python3-venv python3-wheel               # pip install . into a venv (docs/python.md)
+  python3-scipy                            # benchmarks/layer_fft_peer.py, the layers' peer
+  python3-xarray python3-netcdf4 python3-tqdm       # vr.study: labelled arrays, netCDF, progress
+  python3-dask python3-distributed                  # vr.study on a Dask cluster
 )
 
 missing=()
