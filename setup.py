@@ -6,9 +6,9 @@ CMakeLists.txt (Release, only the module: no tests, examples, benchmarks, header
 rules) with -DPython3_EXECUTABLE=<this interpreter>, builds the one target viscoroll_python
 (CMAKE_BUILD_PARALLEL_LEVEL jobs, 2 unless set) and copies what python/CMakeLists.txt puts in
 <build>/python/viscoroll/ (the extension _viscoroll and the generated _build.py) into the wheel;
-__init__.py is python/viscoroll/__init__.py. Everything setuptools and CMake write stays under
-build/ (.gitignore). VISCOROLL_CMAKE_ARGS adds arguments to the configure step (for example
--DVISCOROLL_FFTW=OFF)."""
+the package's .py files (__init__.py, _study.py) are python/viscoroll/'s. Everything setuptools
+and CMake write stays under build/ (.gitignore). VISCOROLL_CMAKE_ARGS adds arguments to the
+configure step (for example -DVISCOROLL_FFTW=OFF)."""
 
 import os
 import pathlib

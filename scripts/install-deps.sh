@@ -15,8 +15,8 @@ packages=(
   python3-pytest python3-matplotlib        # its tests and examples
   python3-venv python3-wheel               # pip install . into a venv (docs/python.md)
   python3-scipy                            # benchmarks/layer_fft_peer.py, the layers' peer
-  python3-xarray python3-netcdf4 python3-tqdm       # vr.study: labelled arrays, netCDF, progress
-  python3-dask python3-distributed                  # vr.study on a Dask cluster
+  python3-xarray python3-netcdf4 python3-tqdm   # vr.study: labelled arrays, netCDF, progress
+  python3-dask python3-distributed              # vr.study on a Dask cluster (docs/python.md)
 )
 
 missing=()

@@ -1,9 +1,11 @@
-// viscoroll's Python module: what its four translation units share. module.cpp holds the
+// viscoroll's Python module: what its translation units share. module.cpp holds the
 // bindings, the scene types and the plane solver of the half space; solve_line.cpp, solve_bem.cpp
 // and solve_plane_substrate.cpp (the plane method on a layer or a spring bed) the heavy solvers,
 // each behind solve_*() and sweep_*() so that pybind11 and the solvers never meet in one
-// translation unit. Every solve is in double precision; an elastic material is the standard linear
-// solid with f = tau = 0, as on the command line (docs/cli.md).
+// translation unit; study.cpp the solves of a study (solve_with() over viscoroll::sweep_scenes).
+// python_support.hpp holds what the units that talk to Python share. Every solve is in double
+// precision; an elastic material is the standard linear solid with f = tau = 0, as on the command
+// line (docs/cli.md).
 #pragma once
 
 #include <chrono>
@@ -298,6 +300,32 @@ std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double
                                   bool fast, const SweepOptions& options, bool roots_only = false);
 std::vector<SolvedPtr> sweep_bem(const SceneSpec& scene, std::span<const double> speeds, int grid,
                                  double tolerance, const SweepOptions& options);
+
+/// What solve() decides before it solves a scene, as it decides it: the method (the caller's, else
+/// the scene's, else auto), the grid asked, the line method's setting, the tolerance, strict. A
+/// study (study.cpp) decides it once per scene and solves each of the scene's items with it.
+struct SolveSetup {
+  Method method = Method::automatic;
+  std::optional<long> grid;
+  bool fast = false;
+  double tolerance = 0;
+  bool strict = false;
+};
+
+/// solve()'s checks of `scene` against its arguments (std::invalid_argument naming the
+/// parameter, solve()'s messages), and the setup they give (module.cpp).
+SolveSetup solve_setup(const SceneSpec& scene, const std::optional<std::string>& method,
+                       std::optional<long> grid, const std::optional<std::string>& setting,
+                       std::optional<double> tolerance, std::optional<bool> strict);
+
+/// solve(scene, speed=speed, start=start) with `setup`, without Python (module.cpp): the solve
+/// and the model's validity checks, whose breaches join the result's warnings and are appended to
+/// `breaches` as solve() words its Python warnings; with setup.strict the first breach throws
+/// std::invalid_argument. `start` (or null) seeds the solve as solve()'s start does: a result of
+/// the same material and setting (line, bem; the auto method takes the one of the method it
+/// runs, the plane method none).
+SolvedPtr solve_with(const SceneSpec& scene, const SolveSetup& setup, double speed,
+                     const Solved* start, std::vector<std::string>& breaches);
 
 /// The half width a0 and half length l0 of the line theory's static long-term contact of the
 /// scene (solve_bem.cpp): Hertz's for the ellipsoid, static_profile_contact for a roller of

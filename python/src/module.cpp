@@ -12,17 +12,13 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <filesystem>
-#include <functional>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -43,6 +39,7 @@
 #include "cli/roller_profile.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/validity_record.hpp"
+#include "python_support.hpp"
 
 #ifndef VISCOROLL_PYTHON_VERSION
 #define VISCOROLL_PYTHON_VERSION "0"
@@ -510,14 +507,6 @@ RollerSpec axial_roller(const std::string& profile, const py::dict& keys) {
           std::make_shared<const cli::RollerProfile>(std::move(roller))};
 }
 
-py::object to_python(const Value& value) {
-  if (const auto* x = std::get_if<double>(&value)) return py::float_(*x);
-  if (const auto* n = std::get_if<long long>(&value)) return py::int_(*n);
-  if (const auto* b = std::get_if<bool>(&value)) return py::bool_(*b);
-  if (const auto* s = std::get_if<std::string>(&value)) return py::str(*s);
-  return py::cast(std::get<std::vector<std::string>>(value));
-}
-
 /// A 1-D float64 array as a vector (any sequence of numbers converts).
 std::vector<double> as_vector(const py::object& values, const char* name) {
   // NumPy would read a string of digits as a number.
@@ -556,62 +545,6 @@ bool fast_setting(const SceneSpec& scene, const std::optional<std::string>& sett
                                             "line or auto method, got method '") +
                                 method_name(method) + "'");
   return true;
-}
-
-/// How often a waiting solve() or sweep() runs Python's signal handlers: Ctrl-C is answered within
-/// this time plus what the work takes to stop.
-constexpr std::chrono::milliseconds signal_poll{50};
-
-/// work(stop) on a thread of its own, while the calling thread (holding the GIL) waits for it in
-/// steps of signal_poll with the GIL released and runs Python's signal handlers between them
-/// (PyErr_CheckSignals). When a handler raises (Ctrl-C: KeyboardInterrupt), `stop` is set and the
-/// exception is raised: after the work has ended if `join_on_stop` (a sweep, which stops before
-/// its next solve), at once otherwise (a solve that cannot be stopped finishes in the background
-/// and its result is dropped; `work` must then own everything it uses). The work's own exception
-/// is rethrown.
-template <class T>
-T interruptible(std::function<T(const std::atomic<bool>&)> work, bool join_on_stop) {
-  struct State {
-    std::atomic<bool> stop{false};
-    std::mutex lock;
-    std::condition_variable ended;
-    bool done = false;
-    std::optional<T> result;
-    std::exception_ptr error;
-  };
-  auto state = std::make_shared<State>();
-  std::thread thread([state, work = std::move(work)] {
-    try {
-      state->result.emplace(work(state->stop));
-    } catch (...) {
-      state->error = std::current_exception();
-    }
-    {
-      const std::lock_guard<std::mutex> guard(state->lock);
-      state->done = true;
-    }
-    state->ended.notify_all();
-  });
-  const auto finished = [&](std::chrono::milliseconds step) {
-    const py::gil_scoped_release release;
-    std::unique_lock<std::mutex> guard(state->lock);
-    return state->ended.wait_for(guard, step, [&] { return state->done; });
-  };
-  while (!finished(signal_poll)) {
-    if (PyErr_CheckSignals() != 0) {
-      state->stop = true;
-      if (join_on_stop) {
-        const py::gil_scoped_release release;
-        thread.join();
-      } else {
-        thread.detach();
-      }
-      throw py::error_already_set();
-    }
-  }
-  thread.join();
-  if (state->error) std::rethrow_exception(state->error);
-  return std::move(*state->result);
 }
 
 /// The record of a result not yet handed to Python, to amend (the auto method's reason, the
@@ -744,9 +677,8 @@ std::vector<SolvedPtr> sweep_auto(const SceneSpec& scene, std::span<const double
 }
 
 SolvedPtr solve_scene(const SceneSpec& scene, Method method, std::optional<long> grid, double speed,
-                      bool fast, double tolerance, const Result* start) {
+                      bool fast, double tolerance, const Solved* seed) {
   const int n = check_for_method(scene, method, grid, fast, tolerance);
-  const Solved* seed = start ? start->solved.get() : nullptr;
   switch (method) {
     case Method::plane:
       return solve_plane(scene, speed, tolerance);
@@ -1064,6 +996,133 @@ py::object roller_object(const RollerSpec& r) {
   return py::cast(EllipsoidRoller{{r}});
 }
 
+// Pickling (copy, multiprocessing, Dask): a material, shift or roller is its class and its
+// constructor's arguments (__reduce__), a scene the dict of its fields (py::pickle). Every number
+// is the stored double, so an unpickled scene solves to the same bits.
+
+/// A shift law's constructor arguments, in its constructor's order.
+py::tuple shift_arguments(const ShiftLaw<double>& law) {
+  if (const auto* w = std::get_if<WlfShift<double>>(&law))
+    return py::make_tuple(w->c1(), w->c2(), w->t_ref());
+  const auto& a = std::get<ArrheniusShift<double>>(law);
+  return py::make_tuple(a.activation_energy(), a.t_ref());
+}
+
+/// A material's constructor arguments, in its constructor's order.
+py::tuple material_arguments(const MaterialSpec& m) {
+  if (m.prony) {
+    const auto& r = m.prony->reference;
+    py::list terms;
+    for (const auto& t : r.terms()) terms.append(py::make_tuple(t.g, t.rho));
+    return py::make_tuple(r.g_inf(), r.nu(), terms,
+                          m.prony->shift ? shift_object(*m.prony->shift) : py::none());
+  }
+  if (m.elastic) return py::make_tuple(m.mu_d, m.nu);
+  return py::make_tuple(m.mu_d, m.nu, m.f, m.tau);
+}
+
+/// A roller's constructor arguments by name, in its constructor's order, so that
+/// type(roller)(**arguments) rebuilds it (a roller of finite length's optional length or end drop
+/// None where it has none); a Roller(profile=...) is its profile's class's.
+py::dict roller_arguments(const RollerSpec& r) {
+  py::dict out;
+  const auto optional = [](double x) -> py::object {
+    return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none());
+  };
+  if (!r.axial) {
+    if (r.cylinder) {
+      out["radius"] = r.radius;
+    } else {
+      out["c1"] = r.c1;
+      out["c2"] = r.c2;
+    }
+  } else if (const auto* c = std::get_if<cli::CrownedProfile>(&*r.axial)) {
+    out["radius"] = c->radius;
+    out["flat_length"] = c->flat_length;
+    out["crown_radius"] = c->crown_radius;
+    out["length"] = optional(c->length);
+    out["tilt"] = c->tilt;
+  } else if (const auto* g = std::get_if<cli::LogarithmicProfile>(&*r.axial)) {
+    out["radius"] = g->radius;
+    out["length"] = g->length;
+    out["scale"] = g->scale;
+    out["end_drop"] = optional(g->end_drop);
+    out["tilt"] = g->tilt;
+  } else {
+    const auto& t = std::get<cli::TableProfile>(*r.axial);
+    out["radius"] = t.radius;
+    out["y"] = py::cast(t.y);
+    out["h"] = py::cast(t.h);
+    out["tilt"] = t.tilt;
+  }
+  return out;
+}
+
+/// A scene's fields, its pickled state; the objects among them pickle themselves.
+py::dict scene_state(const SceneSpec& s) {
+  py::dict out;
+  out["material"] = material_object(s.material);
+  out["roller"] = roller_object(s.roller);
+  out["load"] = s.load;
+  out["speeds"] = py::cast(s.speeds);
+  out["temperature"] = s.material.prony && !std::isnan(s.temperature)
+                           ? py::object(py::float_(s.temperature))
+                           : py::object(py::none());
+  out["density"] = py::cast(s.density);
+  py::dict substrate;
+  substrate["model"] = s.substrate.model;
+  if (!s.substrate.is_half_space()) substrate["thickness"] = s.substrate.thickness;
+  if (s.substrate.model == "layer") substrate["base"] = s.substrate.base;
+  out["substrate"] = substrate;
+  out["method"] = s.method ? py::object(py::str(method_name(*s.method))) : py::object(py::none());
+  out["grid"] = py::cast(s.grid);
+  out["setting"] =
+      s.setting ? py::object(py::str(cli::line_setting_name(*s.setting))) : py::object(py::none());
+  out["tolerance"] = py::cast(s.tolerance);
+  out["strict"] = s.strict;
+  out["description"] = s.description;
+  out["source"] = s.source;
+  return out;
+}
+
+/// The scene of a state (scene_state's keys), checked as Scene() checks its arguments.
+SceneSpec scene_from_state(const py::dict& state) {
+  const auto optional = [&](const char* key) -> std::optional<py::object> {
+    if (!state.contains(key) || state[key].is_none()) return std::nullopt;
+    return py::reinterpret_borrow<py::object>(state[key]);
+  };
+  SceneSpec s;
+  s.material = state["material"].cast<const Material&>().spec;
+  s.roller = state["roller"].cast<const Roller&>().spec;
+  if (const auto substrate = optional("substrate"))
+    s.substrate = substrate_from(substrate->cast<py::dict>());
+  s.load = state["load"].cast<double>();
+  viscoroll::detail::require_positive("load", s.load);
+  if (const auto speeds = optional("speeds")) s.speeds = as_vector(*speeds, "speeds");
+  check_speeds(s.speeds);
+  const auto temperature = optional("temperature");
+  set_temperature(s, temperature ? std::optional(temperature->cast<double>()) : std::nullopt);
+  if (const auto density = optional("density")) {
+    s.density = density->cast<double>();
+    viscoroll::detail::require_positive("density", *s.density);
+  }
+  if (const auto method = optional("method")) s.method = parse_method(method->cast<std::string>());
+  if (const auto grid = optional("grid")) s.grid = grid->cast<long>();
+  if (const auto setting = optional("setting")) {
+    const auto text = setting->cast<std::string>();
+    s.setting = cli::parse_line_setting(text);
+    if (!s.setting)
+      throw std::invalid_argument("viscoroll: setting = '" + text +
+                                  "' is not a setting: expected None, 'default' or 'fast'");
+  }
+  if (const auto tolerance = optional("tolerance")) s.tolerance = tolerance->cast<double>();
+  if (const auto strict = optional("strict")) s.strict = strict->cast<bool>();
+  if (const auto description = optional("description"))
+    s.description = description->cast<std::string>();
+  if (const auto source = optional("source")) s.source = source->cast<std::string>();
+  return s;
+}
+
 constexpr const char* solve_doc = R"doc(
 solve(scene, method=None, grid=None, speed=None, start=None, setting=None, tolerance=None,
       strict=None) -> Result
@@ -1193,6 +1252,29 @@ ValueError
 )doc";
 
 }  // namespace
+
+SolveSetup solve_setup(const SceneSpec& scene, const std::optional<std::string>& method,
+                       std::optional<long> grid, const std::optional<std::string>& setting,
+                       std::optional<double> tolerance, std::optional<bool> strict) {
+  SolveSetup out;
+  out.method = method_for(scene, method);
+  out.fast = fast_setting(scene, setting, out.method);
+  out.tolerance = tolerance_for(scene, tolerance, out.method, grid);
+  out.grid = grid;
+  check_for_method(scene, out.method, grid, out.fast, out.tolerance);
+  out.strict = strict.value_or(scene.strict);
+  return out;
+}
+
+SolvedPtr solve_with(const SceneSpec& scene, const SolveSetup& setup, double speed,
+                     const Solved* start, std::vector<std::string>& breaches) {
+  viscoroll::detail::require_non_negative("speed", speed);
+  SolvedPtr solved =
+      solve_scene(scene, setup.method, setup.grid, speed, setup.fast, setup.tolerance, start);
+  for (auto& m : check_validity({solved}, scene, setup.strict)) breaches.push_back(std::move(m));
+  return solved;
+}
+
 }  // namespace viscoroll::python
 
 PYBIND11_MODULE(_viscoroll, m) {
@@ -1231,7 +1313,10 @@ PYBIND11_MODULE(_viscoroll, m) {
           "long_term_compliance", [](const vp::Material& s) { return compliance(s.spec, true); },
           "(1 + f) c (a Prony series: (1 + sum f_k) c), the compliance under a load held for "
           "long.")
-      .def("__repr__", [](const vp::Material& s) { return material_repr(s.spec); });
+      .def("__repr__", [](const vp::Material& s) { return material_repr(s.spec); })
+      .def("__reduce__", [](const vp::Material& s) {
+        return py::make_tuple(py::type::of(material_object(s.spec)), material_arguments(s.spec));
+      });
 
   py::class_<StandardLinearSolidMaterial, vp::Material>(
       m, "StandardLinearSolid",
@@ -1277,7 +1362,10 @@ PYBIND11_MODULE(_viscoroll, m) {
       .def_property_readonly(
           "t_ref", [](const vp::Shift& s) { return viscoroll::reference_temperature(s.law); },
           "Reference temperature (degrees Celsius).")
-      .def("__repr__", [](const vp::Shift& s) { return shift_repr(s.law); });
+      .def("__repr__", [](const vp::Shift& s) { return shift_repr(s.law); })
+      .def("__reduce__", [](const vp::Shift& s) {
+        return py::make_tuple(py::type::of(shift_object(s.law)), shift_arguments(s.law));
+      });
   py::class_<WlfShiftObject, vp::Shift>(
       m, "WLF",
       "WLF(c1, c2, t_ref)\n\nThe Williams-Landel-Ferry shift: log10 a_T = -c1 (T - t_ref)/(c2 + "
@@ -1349,7 +1437,18 @@ PYBIND11_MODULE(_viscoroll, m) {
              return vp::Roller{axial_roller(profile, keys)};
            }),
            py::arg("profile"))
-      .def("__repr__", [](const vp::Roller& r) { return roller_repr(r.spec); });
+      .def("__repr__", [](const vp::Roller& r) { return roller_repr(r.spec); })
+      .def("__reduce__",
+           [](const vp::Roller& r) {
+             const py::dict arguments = roller_arguments(r.spec);
+             py::list values;
+             for (const auto& [key, value] : arguments) values.append(value);
+             return py::make_tuple(py::type::of(roller_object(r.spec)), py::tuple(values));
+           })
+      .def_property_readonly(
+          "_arguments", [](const vp::Roller& r) { return roller_arguments(r.spec); },
+          "The constructor's arguments by name: type(roller)(**roller._arguments) rebuilds it "
+          "(viscoroll.study's roller axes).");
   py::class_<EllipsoidRoller, vp::Roller>(
       m, "Ellipsoid",
       "Ellipsoid(c1, c2)\n\nThe paper's doubly parabolic roller (Eq. 27), gap c1 x^2/2 + c2 "
@@ -1591,6 +1690,8 @@ PYBIND11_MODULE(_viscoroll, m) {
                     "The scene file's strict: a validity breach is an error in solve() and "
                     "sweep().")
       .def_readonly("description", &SceneSpec::description, "The scene file's description.")
+      .def(py::pickle([](const SceneSpec& s) { return scene_state(s); },
+                      [](const py::dict& state) { return scene_from_state(state); }))
       .def("__repr__", [](const SceneSpec& s) {
         std::string out = "Scene(material=" + material_repr(s.material) +
                           ", roller=" + roller_repr(s.roller) + ", load=" + shortest(s.load);
@@ -1729,7 +1830,8 @@ PYBIND11_MODULE(_viscoroll, m) {
           solved = interruptible<SolvedPtr>(
               [scene, which, grid, v, fast, tol,
                seed = start ? std::optional(*start) : std::nullopt](const std::atomic<bool>&) {
-                return solve_scene(scene, which, grid, v, fast, tol, seed ? &*seed : nullptr);
+                return solve_scene(scene, which, grid, v, fast, tol,
+                                   seed ? seed->solved.get() : nullptr);
               },
               false);
         } else {
@@ -1737,7 +1839,8 @@ PYBIND11_MODULE(_viscoroll, m) {
           // spectrum on a roller profile up to half a second): Python's handlers run when they
           // return.
           py::gil_scoped_release release;
-          solved = solve_scene(scene, which, grid, v, fast, tol, start);
+          solved =
+              solve_scene(scene, which, grid, v, fast, tol, start ? start->solved.get() : nullptr);
         }
         warn(check_validity({solved}, scene, strict.value_or(scene.strict)));
         return Result{std::move(solved)};
@@ -1809,4 +1912,6 @@ PYBIND11_MODULE(_viscoroll, m) {
       py::arg("chunk") = static_cast<long>(viscoroll::SweepOptions{}.chunk),
       py::arg("with_results") = false, py::arg("setting") = py::none(),
       py::arg("tolerance") = py::none(), py::arg("strict") = py::none(), sweep_doc);
+
+  register_study(m);  // solve_items(), the solves of viscoroll.study (study.cpp)
 }

@@ -29,6 +29,11 @@ Solving
     paper's scene; tolerance: the bem's relative accuracy in d and chi, default 0.01, or on a
     layer or a spring bed the plane method's in a0, d and chi, default 1e-4;
     strict=True: a breach of the model's assumptions raises ValueError, else it is a warning)
+    study(scene, *, method=None, chunk=16, client=None, progress=True, threads=None, ...,
+          speed=[...], temperature=[...], load=[...], thickness=[...], radius=[...],
+          material={"name": material, ...}) -> xarray.Dataset
+    (a grid of scenes over named axes, on every core or on a Dask cluster; needs xarray, tqdm
+    and, for a cluster, distributed)
 Results
     Result: the command line's output fields as attributes (a0, b0, l, d, chi,
     rolling_resistance, power_loss, energy_per_revolution, pmax, pmax_x, converged, root,
@@ -97,6 +102,8 @@ def sweep(scene, speeds=None, method=None, grid=None, threads=None,
                             tolerance, strict)
 
 
+from ._study import study  # noqa: E402 (imports xarray, tqdm, distributed only when called)
+
 solve.__doc__ = _doc(_viscoroll.solve)
 sweep.__doc__ = _doc(_viscoroll.sweep)
 
@@ -118,5 +125,6 @@ __all__ = [
     "WLF",
     "__version__",
     "solve",
+    "study",
     "sweep",
 ]
