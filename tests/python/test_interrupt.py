@@ -19,8 +19,12 @@ import pytest
 # ms in the bem solve).
 BOUND = 1.0
 
+# A Python started by a non-interactive shell's background job inherits SIGINT ignored and keeps
+# it so (ctest's children get the default back): the child installs Python's own handler, as an
+# interactive session has it, so that the test does not depend on how the suite was started.
 CHILD = textwrap.dedent("""
-    import sys, time
+    import signal, sys, time
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     import numpy as np
     import viscoroll as vr
     mat = vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0)

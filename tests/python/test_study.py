@@ -275,8 +275,11 @@ def test_breaches_are_one_warning_and_in_the_variable_warnings():
     assert all("a0/R <= 0.2" in w for w in ds["warnings"].values.ravel())
 
 
+# Python's own SIGINT handler in the child, whatever the suite's parent ignored
+# (tests/python/test_interrupt.py).
 CHILD = textwrap.dedent("""
-    import time
+    import signal, time
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     import numpy as np
     import viscoroll as vr
     mat = vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0)
