@@ -8,6 +8,10 @@ CMake build has them (build/*/bin) or VISCOROLL_SOLVE and VISCOROLL_PANEK_KALKER
 import os
 import pathlib
 import shutil
+import signal
+import subprocess
+import sys
+import time
 
 import pytest
 
@@ -62,3 +66,30 @@ def panek_kalker():
                     "only; cmake --build <dir> --target panek_kalker, or set VISCOROLL_PANEK_KALKER "
                     "to its path)")
     return path
+
+
+@pytest.fixture(scope="session")
+def interrupted():
+    """run(code): runs `code` in a child Python that first installs Python's own SIGINT handler
+    (a suite started by a non-interactive shell's background job passes SIGINT on ignored, and
+    Python keeps it so; ctest's children get the default back), waits for its line "started",
+    sends SIGINT 1 s later and returns (seconds from the signal to the child's "interrupted
+    <time.monotonic()>" line, the lines after it, stdout, stderr)."""
+    def run(code):
+        child = subprocess.Popen(
+            [sys.executable, "-c",
+             "import signal\nsignal.signal(signal.SIGINT, signal.default_int_handler)\n" + code],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+        try:
+            assert child.stdout.readline().strip() == "started"
+            time.sleep(1.0)  # well into the call
+            sent = time.monotonic()
+            child.send_signal(signal.SIGINT)
+            out, err = child.communicate(timeout=60)
+        finally:
+            child.kill()
+        lines = out.splitlines()
+        assert lines and lines[0].startswith("interrupted"), (out, err)
+        assert child.returncode == 0, err
+        return float(lines[0].split()[1]) - sent, lines[1:], out, err
+    return run

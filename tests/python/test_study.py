@@ -7,11 +7,9 @@ import math
 import os
 import pathlib
 import pickle
-import signal
 import subprocess
 import sys
 import textwrap
-import time
 import warnings
 
 import numpy as np
@@ -275,11 +273,9 @@ def test_breaches_are_one_warning_and_in_the_variable_warnings():
     assert all("a0/R <= 0.2" in w for w in ds["warnings"].values.ravel())
 
 
-# Python's own SIGINT handler in the child, whatever the suite's parent ignored
-# (tests/python/test_interrupt.py).
+# Run by the fixture `interrupted` (conftest.py).
 CHILD = textwrap.dedent("""
-    import signal, time
-    signal.signal(signal.SIGINT, signal.default_int_handler)
+    import time
     import numpy as np
     import viscoroll as vr
     mat = vr.StandardLinearSolid(mu_d=1.0, nu=0.5, f=9.0, tau=1.0)
@@ -298,24 +294,12 @@ CHILD = textwrap.dedent("""
 """)
 
 
-def test_ctrl_c_stops_a_study_within_a_second():
+def test_ctrl_c_stops_a_study_within_a_second(interrupted):
     # 5000 line solves: about a minute on two threads, if not stopped.
-    child = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True, env=dict(os.environ))
-    try:
-        assert child.stdout.readline().strip() == "started"
-        time.sleep(1.0)
-        sent = time.monotonic()
-        child.send_signal(signal.SIGINT)
-        out, err = child.communicate(timeout=60)
-    finally:
-        child.kill()
-    lines = out.splitlines()
-    assert lines and lines[0].startswith("interrupted"), (out, err)
-    delay = float(lines[0].split()[1]) - sent
+    delay, after, out, err = interrupted(CHILD)
     print(f"study: KeyboardInterrupt {delay * 1e3:.0f} ms after SIGINT")
     assert 0 <= delay < 1.0
-    assert lines[1:] == ["afterwards True"], (out, err)
+    assert after == ["afterwards True"], (out, err)
 
 
 def test_import_viscoroll_needs_no_xarray_tqdm_or_dask():
