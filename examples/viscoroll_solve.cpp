@@ -295,9 +295,9 @@ class Output {
       for (const auto& b : breaches) {
         if (strict_)
           throw std::invalid_argument(
-              "viscoroll-solve: --strict: " + viscoroll::cli::record_label(r) + ": " + b +
+              "viscoroll-solve: --strict: " + viscoroll::cli::record_label(r) + ": " + b.text +
               " (without --strict this is a warning; docs/errors.md, \"Validity checks\")");
-        note("viscoroll-solve: warning: " + viscoroll::cli::record_label(r) + ": " + b);
+        note("viscoroll-solve: warning: " + viscoroll::cli::record_label(r) + ": " + b.text);
       }
     }
     pending_.push_back(std::move(r));
@@ -323,8 +323,8 @@ class Output {
   }
   /// Breaches of the scene itself (its long-term static contact), added to every result's
   /// warnings and once to stderr.
-  void scene_warnings(std::vector<std::string> breaches) {
-    for (const auto& b : breaches) note("viscoroll-solve: warning: the scene: " + b);
+  void scene_warnings(std::vector<viscoroll::Warning> breaches) {
+    for (const auto& b : breaches) note("viscoroll-solve: warning: the scene: " + b.text);
     scene_breaches_ = std::move(breaches);
   }
   /// Keeps a message for stderr (a warning, a solve that did not converge), printed by flush().
@@ -517,7 +517,7 @@ class Output {
   std::vector<std::string> notes_;
   std::optional<viscoroll::cli::ValidityFacts> facts_;
   bool strict_ = false;
-  std::vector<std::string> scene_breaches_;
+  std::vector<viscoroll::Warning> scene_breaches_;
 };
 
 /// The scene as the solvers take it, from options or from a scene file.
@@ -1209,7 +1209,7 @@ viscoroll::cli::LongTermContact line_long_term(const Problem& p) {
 /// w = W / length (Eq. 47 of a cylinder: the narrowest the contact can be); the cylinder's (plane)
 /// the same at its load per length. A result that does not converge then still says why the
 /// scene is suspect (a modulus in MPa: a contact wider than the roller).
-std::vector<std::string> scene_breaches(const Problem& p) {
+std::vector<viscoroll::Warning> scene_breaches(const Problem& p) {
   const double compliance =
       p.prony ? p.prony->long_term_compliance() : material(p, p.tau.front()).long_term_compliance();
   const bool cylinder = !p.c2 && !p.roller;
@@ -1359,7 +1359,7 @@ int main(int argc, char** argv) {
       auto breaches = scene_breaches(problem);
       if (problem.strict && !breaches.empty())
         throw std::invalid_argument("viscoroll-solve: --strict: " + options.scene + ": " +
-                                    breaches.front() +
+                                    breaches.front().text +
                                     " (without --strict this is a warning; docs/errors.md, "
                                     "\"Validity checks\")");
       out.scene_warnings(std::move(breaches));

@@ -8,6 +8,7 @@
 #include <viscoroll/line/static_profile_contact.hpp>
 
 #include "engineering.hpp"
+#include "outcome_fields.hpp"
 
 namespace viscoroll::cli {
 
@@ -88,7 +89,7 @@ Record bem_fields(const Solution& s, const AlongRoller<double>& along,
                               {"error_l", s.error.l},   {"error_pmax", s.error.p_max}};
     out.insert(out.end(), estimates.begin(), estimates.end());
   }
-  const Record outcome = {{"reason", s.reason}, {"warnings", s.warnings}};
+  const Record outcome = outcome_fields<Record>(s);
   out.insert(out.end(), outcome.begin(), outcome.end());
   return out;
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "engineering.hpp"
+#include "outcome_fields.hpp"
 
 namespace viscoroll::cli {
 
@@ -73,9 +74,10 @@ Record line_fields(const Solution& s, const Record& middle, const Duty& duty, in
   const Record tail = {
       {"seconds", seconds},     {"converged", s.converged},
       {"root", s.root},         {"iterations", static_cast<long long>(s.iterations)},
-      {"residual", s.residual}, {"terms", static_cast<long long>(terms)},
-      {"reason", s.reason},     {"warnings", s.warnings}};
+      {"residual", s.residual}, {"terms", static_cast<long long>(terms)}};
   out.insert(out.end(), tail.begin(), tail.end());
+  const Record outcome = outcome_fields<Record>(s);
+  out.insert(out.end(), outcome.begin(), outcome.end());
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engineering.hpp"
+#include "outcome_fields.hpp"
 
 namespace viscoroll::cli {
 
@@ -30,9 +31,10 @@ Record plane_fields(const Solution& s, const Duty& duty, double seconds) {
   const Record tail = {{"seconds", seconds},
                        {"converged", s.converged},
                        {"iterations", static_cast<long long>(s.iterations)},
-                       {"residual", s.residual},
-                       {"warnings", std::vector<std::string>{}}};
+                       {"residual", s.residual}};
   out.insert(out.end(), tail.begin(), tail.end());
+  const Record outcome = outcome_fields<Record>(s);
+  out.insert(out.end(), outcome.begin(), outcome.end());
   return out;
 }
 
@@ -69,8 +71,8 @@ Record plane_substrate_fields(const Solution& s, const std::string& substrate, d
                        {"error_pmax", s.error_peak},
                        {"substrate", substrate}};
   out.insert(out.end(), tail.begin(), tail.end());
-  if (!s.converged) out.push_back({"reason", s.reason});
-  out.push_back({"warnings", std::vector<std::string>{}});
+  const Record outcome = outcome_fields<Record>(s);
+  out.insert(out.end(), outcome.begin(), outcome.end());
   return out;
 }
 

@@ -74,16 +74,22 @@ std::string record_label(const Record& record) {
   return out + "speed = " + scene_detail::shortest(record_number(record, "speed"));
 }
 
-/// Adds `messages` to the record's warnings (the field `warnings`, appended when the record has
-/// none): after the warnings it has, or before them with `first`.
+/// Adds `list` to the record's `warnings` and their codes to its `warning_codes` (each field
+/// appended when the record has none): after the warnings it has, or before them with `first`.
 template <class Record>
-void add_warnings(Record& record, const std::vector<std::string>& messages, bool first = false) {
-  if (messages.empty()) return;
-  if (auto* list = record_value<std::vector<std::string>>(record, "warnings")) {
-    list->insert(first ? list->begin() : list->end(), messages.begin(), messages.end());
-    return;
+void add_warnings(Record& record, const std::vector<Warning>& list, bool first = false) {
+  if (list.empty()) return;
+  std::vector<std::string> texts, codes;
+  for (const auto& w : list) {
+    texts.push_back(w.text);
+    codes.emplace_back(to_string(w.code));
   }
-  record.push_back(typename Record::value_type{"warnings", messages});
+  for (auto [field, values] : {std::pair{"warnings", &texts}, std::pair{"warning_codes", &codes}}) {
+    if (auto* have = record_value<std::vector<std::string>>(record, field))
+      have->insert(first ? have->begin() : have->end(), values->begin(), values->end());
+    else
+      record.push_back(typename Record::value_type{field, *values});
+  }
 }
 
 /// The breaches of the result `record` (converged; its method named by the field `method`)
@@ -109,14 +115,14 @@ std::vector<ValidityBreach<double>> record_breaches(const Record& record,
   return check_validity(in);
 }
 
-/// Adds the breaches' messages to the record's warnings (the field `warnings`, appended when the
-/// record has none) and returns them.
+/// Adds the breaches to the record's warnings and warning_codes (add_warnings) and returns them.
 template <class Record>
-std::vector<std::string> add_validity_warnings(Record& record, const ValidityFacts& facts) {
-  std::vector<std::string> messages;
-  for (const auto& b : record_breaches(record, facts)) messages.push_back(b.message);
-  add_warnings(record, messages);
-  return messages;
+std::vector<Warning> add_validity_warnings(Record& record, const ValidityFacts& facts) {
+  std::vector<Warning> breaches;
+  for (const auto& b : record_breaches(record, facts))
+    breaches.push_back({warning_code(b.check), b.message});
+  add_warnings(record, breaches);
+  return breaches;
 }
 
 /// (V1), (V2) on a scene's long-term static contact, before any solve, so that a result that
@@ -126,9 +132,8 @@ std::vector<std::string> add_validity_warnings(Record& record, const ValidityFac
 /// finite length (a0 NaN: it reaches the roller's ends), the narrowest contact along the whole
 /// roller, a = sqrt(4 C w / c1) at the load per length w = load / (body_max - body_min) (the
 /// cylinder's Eq. 47, C the long-term compliance). Each message starts with what was checked.
-inline std::vector<std::string> scene_breaches(const ValidityFacts& facts, double a0, double l0,
-                                               double long_term_compliance, double load,
-                                               double c1) {
+inline std::vector<Warning> scene_breaches(const ValidityFacts& facts, double a0, double l0,
+                                           double long_term_compliance, double load, double c1) {
   ValidityInputs<double> in;
   in.radius = facts.radius;
   in.body_min = facts.body_min;
@@ -144,8 +149,9 @@ inline std::vector<std::string> scene_breaches(const ValidityFacts& facts, doubl
     in.a0 = std::sqrt(4 * long_term_compliance * (load / (facts.body_max - facts.body_min)) / c1);
     prefix = "its long-term static contact reaches the roller's ends; along the whole roller ";
   }
-  std::vector<std::string> out;
-  for (const auto& b : check_validity(in)) out.push_back(prefix + b.message);
+  std::vector<Warning> out;
+  for (const auto& b : check_validity(in))
+    out.push_back({warning_code(b.check), prefix + b.message});
   return out;
 }
 

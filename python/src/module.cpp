@@ -713,10 +713,10 @@ std::vector<std::string> check_validity(const std::vector<SolvedPtr>& solved,
   const auto scene_wide = cli::scene_breaches(facts, a0, scene.roller.axial ? l0 : std::nan(""),
                                               compliance, scene.load, scene.roller.c1);
   if (strict && !scene_wide.empty())
-    throw std::invalid_argument("viscoroll: strict: the scene: " + scene_wide.front() +
+    throw std::invalid_argument("viscoroll: strict: the scene: " + scene_wide.front().text +
                                 " (without strict this is a warning; docs/errors.md, \"Validity "
                                 "checks\")");
-  for (const auto& b : scene_wide) messages.push_back("viscoroll: the scene: " + b);
+  for (const auto& b : scene_wide) messages.push_back("viscoroll: the scene: " + b.text);
   for (const auto& r : solved) {
     Record& record = record_of(r);
     if (r->method() == Method::line) cli::add_end_hint(record, facts);
@@ -726,10 +726,10 @@ std::vector<std::string> check_validity(const std::vector<SolvedPtr>& solved,
     for (const auto& breach : cli::add_validity_warnings(record_of(r), facts)) {
       if (strict)
         throw std::invalid_argument("viscoroll: strict: " + cli::record_label(r->record()) + ": " +
-                                    breach +
+                                    breach.text +
                                     " (without strict this is a warning; docs/errors.md, "
                                     "\"Validity checks\")");
-      messages.push_back("viscoroll: " + cli::record_label(r->record()) + ": " + breach);
+      messages.push_back("viscoroll: " + cli::record_label(r->record()) + ": " + breach.text);
     }
   return messages;
 }
@@ -885,12 +885,17 @@ const std::vector<std::pair<const char*, const char*>>& field_docs() {
       {"substrate",
        "plane on a layer or a spring bed: the body, as 'layer (thickness 0.004 m, bonded)' or "
        "'spring_bed (thickness 0.004 m)'."},
-      {"reason",
-       "line, bem: why the iteration stopped; plane on a layer or a spring bed: why it did not "
-       "converge (only then)."},
+      {"reason", "Why the solve stopped, in words (plane: empty when converged)."},
+      {"code",
+       "Why the solve stopped, a stable name from viscoroll.STOP_CODES: 'converged' for a "
+       "converged result, else e.g. 'iteration_limit', 'not_a_contact', "
+       "'contact_reaches_body_end'."},
       {"warnings",
        "The solver's warnings and the model's validity checks that the result breaches (a list "
        "of str)."},
+      {"warning_codes",
+       "The warnings' stable names from viscoroll.WARNING_CODES, index for index with warnings "
+       "(a list of str), e.g. 'small_slope', 'least_squares_minimum'."},
   };
   return docs;
 }
@@ -1298,6 +1303,15 @@ PYBIND11_MODULE(_viscoroll, m) {
       "1980).\n\nThe compiled part of the package `viscoroll`; see help(viscoroll).";
   m.attr("__version__") = VISCOROLL_PYTHON_VERSION;
   m.attr("DEFAULT_CHUNK") = viscoroll::SweepOptions{}.chunk;  // sweep()'s default chunk
+  // The stable names of a result's `code` and `warning_codes` (core/outcome.hpp), in the enums'
+  // order.
+  const auto names = [](const auto& list) {
+    py::list out;
+    for (const std::string_view n : list) out.append(py::str(n.data(), n.size()));
+    return py::tuple(out);
+  };
+  m.attr("STOP_CODES") = names(viscoroll::detail::stop_code_names);
+  m.attr("WARNING_CODES") = names(viscoroll::detail::warning_code_names);
 
   // Materials.
   py::class_<vp::Material>(m, "Material",

@@ -37,13 +37,15 @@ Solving
 Results
     Result: the command line's output fields as attributes (a0, b0, l, d, chi,
     rolling_resistance, power_loss, energy_per_revolution, pmax, pmax_x, converged, root,
-    iterations, residual, reason, warnings, method_reason, tolerance_met, error_d, error_chi,
-    ...), as_dict(), and pressure(x, y), a(y), b(y),
+    iterations, residual, reason, code, warnings, warning_codes, method_reason, tolerance_met,
+    error_d, error_chi, ...), as_dict(), and pressure(x, y), a(y), b(y),
     f0(y) on NumPy arrays. chi is the rolling-resistance force over the load: F = chi W is
     rolling_resistance, P = chi W V power_loss.
 
 Invalid input raises ValueError with the library's message naming the parameter; a solve that
-does not converge is returned with converged == False and a reason. The frame moves with the
+does not converge is returned with converged == False, a reason and a code, one of the stable
+names in STOP_CODES ("converged" otherwise); each warning has its name in WARNING_CODES, so a
+program branches on r.code and r.warning_codes, not on the words. The frame moves with the
 roller, which travels towards +x; x is measured from its axis. Any consistent units.
 
 Example
@@ -80,6 +82,8 @@ from ._viscoroll import (  # noqa: E402
     Shift,
     StandardLinearSolid,
     Table,
+    STOP_CODES,
+    WARNING_CODES,
     __version__,
 )
 
@@ -118,10 +122,12 @@ __all__ = [
     "Prony",
     "Result",
     "Roller",
+    "STOP_CODES",
     "Scene",
     "Shift",
     "StandardLinearSolid",
     "Table",
+    "WARNING_CODES",
     "WLF",
     "__version__",
     "solve",

@@ -74,7 +74,9 @@ FIELDS = {
     "error_pmax": ("Pa", "estimated error of pmax"),
     "substrate": (None, "the body under the roller (plane on a layer or a spring bed)"),
     "reason": (None, "why the iteration stopped (empty where the method gives none)"),
+    "code": (None, "why the iteration stopped, a name of viscoroll.STOP_CODES"),
     "warnings": (None, "the solver's warnings and the validity checks' breaches, one per line"),
+    "warning_codes": (None, "the warnings' names of viscoroll.WARNING_CODES, one per line"),
 }
 
 # The axes other than the roller's arguments: units (a pair as in FIELDS) and long name.

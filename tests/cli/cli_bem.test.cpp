@@ -135,6 +135,8 @@ TEST_CASE("cli: viscoroll-solve --method line prints the domain warning on stder
   CHECK(ok.status == 0);
   CHECK(ok.err.empty());
   CHECK(ok.out.find("\"warnings\":[]") != std::string::npos);
+  CHECK(ok.out.find("\"warning_codes\":[]") != std::string::npos);
+  CHECK(ok.out.find("\"code\":\"converged\"") != std::string::npos);
 }
 
 TEST_CASE(

@@ -243,6 +243,7 @@ TEST_CASE("cli: a result that did not converge shows no numbers in the table and
   REQUIRE(!values[0]["converged"].get<bool>());
   CHECK(values[0]["a0"].is_number());  // JSON keeps its fields, with the reason
   CHECK(!values[0]["reason"].get<std::string>().empty());
+  CHECK(values[0]["code"] == "iteration_limit");
   // The table row: tau, speed, Vtau/a_lt, then a0 b0 l d chi F_N P_W as "-", then "no".
   const auto rows = lines_of(table.out);
   REQUIRE(rows.size() == 2);

@@ -176,6 +176,6 @@ def test_the_flat_idler_whose_contact_reaches_its_ends_is_the_bems(scenes_dir):
                                       "2.8 a0 = 0.01941 of the roller's end at y = 0.19")
     assert abs(r.rolling_resistance / 39.28 - 1) <= 0.05 + 0.01
     line = vr.solve(scene, method="line", speed=4.0)
-    assert not line.converged
+    assert not line.converged and line.code in vr.STOP_CODES and line.code != "converged"
     assert line.reason.endswith("the line theory does not describe an end-loaded contact: use the "
                                 "bem method")

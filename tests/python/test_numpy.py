@@ -66,9 +66,11 @@ def test_sweep_columns():
         assert s[key].dtype == np.bool_ and s[key].shape == (3,), key
     assert isinstance(s["reason"], list) and all(isinstance(r, str) for r in s["reason"])
     assert isinstance(s["warnings"], list) and all(isinstance(w, list) for w in s["warnings"])
+    assert [len(c) for c in s["warning_codes"]] == [len(w) for w in s["warnings"]]
     assert np.array_equal(s["speed"], SCENE.speeds)
     plane = vr.sweep(SCENE, method="plane", speeds=np.array([0.5, 2.0]))
-    assert plane["chi"].shape == (2,) and "l" not in plane and "reason" not in plane
+    assert plane["chi"].shape == (2,) and "l" not in plane
+    assert plane["code"] == ["converged", "converged"] and plane["reason"] == ["", ""]
     with_results = vr.sweep(SCENE, method="line", threads=1, with_results=True)
     assert [r.chi for r in with_results["results"]] == list(s["chi"])
 

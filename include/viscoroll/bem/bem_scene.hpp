@@ -16,6 +16,7 @@
 #include <viscoroll/bem/hertz.hpp>
 #include <viscoroll/core/along_roller.hpp>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/validate.hpp>
 
@@ -230,15 +231,17 @@ struct BemSolution {
   /// The static Hertz contact of the long-term compliance (on a substrate, of that compliance
   /// times the sizing factor of (B19): the estimate that sized the grid)
   HertzContact<Real> long_term;
-  int contact_cells;      ///< cells with p > 0
-  bool converged;         ///< every claimed quantity holds to the tolerance (else see reason)
-  std::string reason;     ///< "converged", or why not
-  int iterations;         ///< active-set iterations
-  int krylov_iterations;  ///< GMRES steps over all active-set iterations
-  Real residual;          ///< max complementarity violation relative to d (B11)
+  int contact_cells;   ///< cells with p > 0
+  bool converged;      ///< every claimed quantity holds to the tolerance (else see reason)
+  std::string reason;  ///< "converged", or why not
+  StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
+  int iterations;                       ///< active-set iterations
+  int krylov_iterations;                ///< GMRES steps over all active-set iterations
+  Real residual;                        ///< max complementarity violation relative to d (B11)
   /// Quantities the solution does not claim although it converged (B12's edge model violated),
   /// and a tolerance the refinement did not meet.
   std::vector<std::string> warnings;
+  std::vector<WarningCode> warning_codes;  ///< the warnings' codes, index for index
   int elements;  ///< elements per semi-axis of `grid` (BemOptions::grid, or the refinement's)
   /// The estimated discretisation errors (absolute; NaN where not estimated: one grid).
   BemErrorEstimate<Real> error;

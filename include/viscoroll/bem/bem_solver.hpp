@@ -327,10 +327,12 @@ class BemSolver {
             .converged = report.converged && !touches_edge,
             .reason = touches_edge ? "contact reaches the grid boundary (increase extent)"
                                    : report.reason,
+            .code = touches_edge ? StopCode::contact_reaches_grid_boundary : report.code,
             .iterations = report.iterations,
             .krylov_iterations = report.krylov_iterations,
             .residual = std::max(violation, abs(total - scene.load) / scene.load),
             .warnings = {},
+            .warning_codes = {},
             .elements = 0,
             .error = {},
             .tolerance_met = false,
@@ -354,6 +356,7 @@ class BemSolver {
       const int cells_y = static_cast<int>(std::lround(static_cast<double>(2 * sol.l / grid.hy)));
       if (cells_x < 3 || cells_y < 3) {
         sol.converged = false;
+        sol.code = StopCode::under_resolved;
         sol.reason = "contact resolved by fewer than 3 cells across (" + std::to_string(cells_x) +
                      " x " + std::to_string(cells_y) + "; increase grid)";
       }
@@ -367,11 +370,12 @@ class BemSolver {
       for (const auto& t : terms) {
         const Real memory = scene.speed * t.tau;
         if (memory > grid.hx && memory / (1 + f_total) < grid.hx / 4) {
-          sol.warnings.push_back(
-              "leading-edge layer V tau/(1 + f) = " +
-              detail::format_binary(memory / (1 + f_total), length_exponent) +
-              " is under a quarter cell (hx = " + detail::format_binary(grid.hx, length_exponent) +
-              "): a0 and b0 are not resolved");
+          add_warning(sol, WarningCode::edge_layer_unresolved,
+                      "leading-edge layer V tau/(1 + f) = " +
+                          detail::format_binary(memory / (1 + f_total), length_exponent) +
+                          " is under a quarter cell (hx = " +
+                          detail::format_binary(grid.hx, length_exponent) +
+                          "): a0 and b0 are not resolved");
           break;
         }
       }
@@ -387,12 +391,13 @@ class BemSolver {
         bool loaded = false;
         for (int i = 0; i < grid.nx && !loaded; ++i) loaded = sol.p(i, j) > 0;
         if (loaded) {
-          sol.warnings.push_back(
+          add_warning(
+              sol, WarningCode::contact_at_roller_end,
               "the contact reaches the roller's end at y = " +
-              detail::format_binary(y < 0 ? scene.y_min : scene.y_max, length_exponent) +
-              ": its end pressure peak is resolved only to the grid (hy = " +
-              detail::format_binary(grid.hy, length_exponent) +
-              "); the line theory does not apply there");
+                  detail::format_binary(y < 0 ? scene.y_min : scene.y_max, length_exponent) +
+                  ": its end pressure peak is resolved only to the grid (hy = " +
+                  detail::format_binary(grid.hy, length_exponent) +
+                  "); the line theory does not apply there");
           break;
         }
       }
@@ -408,6 +413,7 @@ class BemSolver {
       sol.residual = std::numeric_limits<Real>::quiet_NaN();
       if (sol.converged) {
         sol.converged = false;
+        sol.code = StopCode::non_finite;
         sol.reason = "non-finite value in the solution";
       }
     }
@@ -701,7 +707,7 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
     last = solve_on(u, n, start, across);
     setup += last->seconds_setup;
     seconds += last->seconds_solve;
-    while (!last->converged && last->reason.starts_with("contact reaches the grid boundary") &&
+    while (!last->converged && last->code == StopCode::contact_reaches_grid_boundary &&
            across < hertz.a) {
       across = std::min(hertz.a, 2 * across);
       last = solve_on(u, n, start, across);
@@ -717,7 +723,7 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
     // A grid too coarse for the contact (fewer than 3 cells across) is refined; any other
     // failure is returned as it is.
     if (!s.converged) {
-      if (s.reason.starts_with("contact resolved by fewer than 3 cells")) continue;
+      if (s.code == StopCode::under_resolved) continue;
       break;
     }
     if (coarse) {
@@ -765,7 +771,10 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
     const std::string estimates = percent(sol.error.d / abs(sol.d), 2) + " in d, " +
                                   percent(sol.error.chi / std::max(abs(sol.chi), chi_floor), 2) +
                                   " in chi";
-    sol.warnings.push_back(
+    add_warning(
+        sol,
+        !(boost::math::isfinite)(sol.error.d) || !three_grids ? WarningCode::tolerance_not_verified
+                                                              : WarningCode::tolerance_not_met,
         !(boost::math::isfinite)(sol.error.d)
             ? "the tolerance " + percent(tol) + " is not verified: only the grid " +
                   std::to_string(sol.elements) + " resolved the contact (max_grid " +

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/validate.hpp>
 
 namespace viscoroll {
@@ -23,6 +24,21 @@ enum class ValidityCheck {
   slenderness,    ///< (V3) the line theory's long contact
   quasi_static,   ///< (V4) speed against the rubber's shear-wave speed
 };
+
+/// The warning code of a breach of `check` (core/outcome.hpp).
+constexpr WarningCode warning_code(ValidityCheck check) {
+  switch (check) {
+    case ValidityCheck::small_slope:
+      return WarningCode::small_slope;
+    case ValidityCheck::roller_length:
+      return WarningCode::roller_length;
+    case ValidityCheck::slenderness:
+      return WarningCode::slenderness;
+    case ValidityCheck::quasi_static:
+      break;
+  }
+  return WarningCode::quasi_static;
+}
 
 /// What check_validity reads: a result's contact and its scene, in any consistent units. NaN or
 /// infinite values mean "not given" and skip the checks that need them.

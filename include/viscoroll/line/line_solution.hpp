@@ -11,6 +11,7 @@
 #include <vector>
 #include <viscoroll/core/along_roller.hpp>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/line/line_shape.hpp>
 
@@ -31,10 +32,12 @@ struct LineSolution {
   /// converged at a certified least-squares minimum where the equations have no root (the
   /// residual is then reported, and a warning says so).
   bool root;
-  std::string reason;                 ///< why it stopped
-  int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
+  std::string reason;                   ///< why it stopped
+  StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
+  int iterations;                       ///< Levenberg-Marquardt iterations (0 for a closed form)
   Real residual;                      ///< max |r| of the scaled equations at the returned solution
   std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
+  std::vector<WarningCode> warning_codes;  ///< the warnings' codes, index for index
 
   Real c1, vtau, f, compliance;
 
@@ -103,13 +106,14 @@ struct LineSolution {
 /// a(0) near V tau = 5 a0). a(y) is sampled at 65 points y = l k/64, k = 0..64 (from the centre c
 /// both ways for an asymmetric contact, whose a(0) is read at c). Empty inside it.
 template <RealScalar Real>
-std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
-  std::vector<std::string> warnings;
+std::vector<Warning> line_domain_warnings(const LineShape<Real>& shape) {
+  std::vector<Warning> warnings;
   const Real l = shape.l, a0 = shape.a(shape.centre);
   const Real aspect = l / a0;
   if (!(aspect >= 3))
-    warnings.push_back("contact aspect l/a(0) = " + std::to_string(double(aspect)) +
-                       " < 3: outside the line-contact theory's domain of validity");
+    warnings.push_back({WarningCode::line_aspect,
+                        "contact aspect l/a(0) = " + std::to_string(double(aspect)) +
+                            " < 3: outside the line-contact theory's domain of validity"});
   Real a_max = a0, y_max = 0;
   for (int k = 1; k <= 64; ++k)
     for (int side : {1, -1}) {
@@ -118,10 +122,11 @@ std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
       if (a > a_max) a_max = a, y_max = y;
     }
   if (a_max > a0 && !(l >= 3 * a_max))
-    warnings.push_back("a(y) = " + std::to_string(double(a_max)) +
-                       " at y = " + std::to_string(double(y_max)) +
-                       " is not small against l = " + std::to_string(double(l)) +
-                       " (l/max a(y) < 3): outside the line-contact theory's domain of validity");
+    warnings.push_back(
+        {WarningCode::line_width,
+         "a(y) = " + std::to_string(double(a_max)) + " at y = " + std::to_string(double(y_max)) +
+             " is not small against l = " + std::to_string(double(l)) +
+             " (l/max a(y) < 3): outside the line-contact theory's domain of validity"});
   return warnings;
 }
 
@@ -132,9 +137,8 @@ std::vector<std::string> line_domain_warnings(const LineShape<Real>& shape) {
 /// distance to the bound (in the slow regime, V tau <~ 0.1 a0, at small N; docs/line-solver.md,
 /// "Oversampling"). Empty for a solution that keeps them or has not converged.
 template <RealScalar Real, class Quadrature>
-std::vector<std::string> line_bound_warnings(const LineSolution<Real, Quadrature>& s,
-                                             Real tolerance) {
-  std::vector<std::string> warnings;
+std::vector<Warning> line_bound_warnings(const LineSolution<Real, Quadrature>& s, Real tolerance) {
+  std::vector<Warning> warnings;
   if (!s.converged) return warnings;
   const Real a0 = s.a(Real(0)), b0 = s.b(Real(0)), l = s.l();
   const auto text = [](Real x) { return std::to_string(double(x)); };
@@ -143,14 +147,19 @@ std::vector<std::string> line_bound_warnings(const LineSolution<Real, Quadrature
       "the rolling contact\"); raise the terms, or use oversampling 2 with the mapped basis "
       "(docs/line-solver.md, \"Oversampling\")";
   if (!(a0 <= s.a_long_term * (1 + tolerance)))
-    warnings.push_back("a(0)/a0 = " + text(a0 / s.a_long_term) +
-                       " > 1 breaks the bound a(0) <= a0 of the long-term static contact" + advice);
+    warnings.push_back({WarningCode::rolling_bound,
+                        "a(0)/a0 = " + text(a0 / s.a_long_term) +
+                            " > 1 breaks the bound a(0) <= a0 of the long-term static contact" +
+                            advice});
   if (!(l <= s.l_long_term * (1 + tolerance)))
-    warnings.push_back("l/l0 = " + text(l / s.l_long_term) +
-                       " > 1 breaks the bound l <= l0 of the long-term static contact" + advice);
+    warnings.push_back({WarningCode::rolling_bound,
+                        "l/l0 = " + text(l / s.l_long_term) +
+                            " > 1 breaks the bound l <= l0 of the long-term static contact" +
+                            advice});
   if (!(b0 >= -tolerance * s.a_long_term))
-    warnings.push_back("b(0)/a0 = " + text(b0 / s.a_long_term) + " < 0 breaks the bound b(0) >= 0" +
-                       advice);
+    warnings.push_back(
+        {WarningCode::rolling_bound,
+         "b(0)/a0 = " + text(b0 / s.a_long_term) + " < 0 breaks the bound b(0) >= 0" + advice});
   return warnings;
 }
 
@@ -158,7 +167,7 @@ std::vector<std::string> line_bound_warnings(const LineSolution<Real, Quadrature
 /// a negative chi is the method's discretisation error on a nearly elastic material, and the
 /// rolling resistance is zero to the method's accuracy. Empty otherwise.
 template <class Real>
-std::vector<std::string> line_chi_sign_warnings(bool converged, Real chi) {
+std::vector<Warning> line_chi_sign_warnings(bool converged, Real chi) {
   if (!converged || !(chi < 0)) return {};
   std::ostringstream text;
   text.precision(3);
@@ -166,7 +175,7 @@ std::vector<std::string> line_chi_sign_warnings(bool converged, Real chi) {
        << " < 0: rolling dissipates energy, so chi >= 0; a negative chi is the line method's "
           "discretisation error on a nearly elastic material: the rolling resistance is zero to "
           "the method's accuracy (the bem method resolves it)";
-  return {text.str()};
+  return {{WarningCode::chi_negative, text.str()}};
 }
 
 }  // namespace viscoroll

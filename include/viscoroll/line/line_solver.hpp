@@ -165,9 +165,11 @@ class LineSolver {
                     .converged = true,
                     .root = true,
                     .reason = {},
+                    .code = StopCode::converged,
                     .iterations = 0,
                     .residual = Real(0),
                     .warnings = {},
+                    .warning_codes = {},
                     .c1 = u.c1,
                     .vtau = vtau,
                     .f = f,
@@ -221,10 +223,12 @@ class LineSolver {
       sol.f = f;
       sol.compliance = c;
     }
+    sol.code = slow_c.code == StopCode::contact_reaches_body_end ? slow_c.code
+                                                                 : StopCode::static_contact_failed;
     sol.reason = "the long-term static contact of the profile: " + slow_c.reason +
                  " (the line theory needs a slender contact, its collocation points a half "
                  "width apart, docs/theory.md (G5); a short contact is the BEM's)";
-    sol.warnings = slow_c.warnings;
+    copy_warnings(sol, slow_c);
     return sol;
   }
   /// A contact that reaches the roller's body end is outside the line theory (a sharp end's
@@ -237,6 +241,7 @@ class LineSolver {
     if (sol.converged && !(y_plus < roller.y_max() && y_minus > roller.y_min())) {
       sol.converged = false;
       sol.root = false;
+      sol.code = StopCode::contact_reaches_body_end;
       sol.reason = "the contact reaches the roller's body end (it spans y = " +
                    detail::format_value(y_minus) + " ... " + detail::format_value(y_plus) +
                    ", the body ends at y = " + detail::format_value(roller.y_min()) + " and " +
@@ -306,7 +311,8 @@ class LineSolver {
     const Solution* start = &seed;
     if (!usable_seed(*start)) {
       Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
-      again.warnings.push_back(
+      add_warning(
+          again, WarningCode::seed_set_aside,
           "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
           "solved from the cold start");
       return again;
@@ -321,8 +327,9 @@ class LineSolver {
     const bool no_root =
         (boost::math::isfinite)(seeded.residual) && seeded.residual > root_tolerance();
     if (!no_root)
-      again.warnings.push_back("the iteration from the seed stopped (" + seeded.reason +
-                               "): solved again from the cold start");
+      add_warning(again, WarningCode::seed_set_aside,
+                  "the iteration from the seed stopped (" + seeded.reason +
+                      "): solved again from the cold start");
     return again;
   }
 
@@ -420,8 +427,8 @@ class LineSolver {
           x = res.pack(s0, d0);
         }
         if (!res(x, r))
-          return failure(u, slow, c, f, vtau, res, x, "initial guess outside the domain",
-                         iterations);
+          return failure(u, slow, c, f, vtau, res, x, StopCode::outside_domain,
+                         "initial guess outside the domain", iterations);
       }
       const bool last = k + 1 == stages.size();
       Matrix jac;  // Levenberg-Marquardt's Jacobian at its last iterate
@@ -435,7 +442,8 @@ class LineSolver {
         jac_at_root = false;
       }
       if (out.undefined)
-        return failure(u, slow, c, f, vtau, res, x, "Jacobian undefined", iterations);
+        return failure(u, slow, c, f, vtau, res, x, StopCode::outside_domain, "Jacobian undefined",
+                       iterations);
       shape = res.shape(x);
       d = res.penetration(x);
       // An intermediate stage that stops short still seeds the next one; only the last decides.
@@ -460,18 +468,21 @@ class LineSolver {
         const bool narrow = std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits;
         if (narrow && !(estimate <= sqrt_eps)) {
           out.converged = false;
+          out.code = StopCode::precision_exhausted;
           out.reason = "error estimate max |J^+ r| = " + std::to_string(double(estimate)) +
                        " of the unknowns exceeds sqrt(eps) = " + std::to_string(double(sqrt_eps)) +
                        ": the residual's rounding floor is beyond what this scalar carries here "
                        "(use double)";
         }
-        Solution sol = make(u, slow, c, f, vtau, res, x, r, out.converged, out.reason, iterations);
+        Solution sol =
+            make(u, slow, c, f, vtau, res, x, r, out.converged, out.code, out.reason, iterations);
         // A root of the discrete equations that is not a contact (d, a(0) or l not positive;
         // found at folds, e.g. by the property test of errors.md) is reported, not returned as
         // converged.
         const Real a_centre = sol.a(sol.shape.centre);
         if (sol.converged && !(sol.d > 0 && a_centre > 0 && sol.l() > 0)) {
           sol.converged = false;
+          sol.code = StopCode::not_a_contact;
           sol.reason = "a root of the line equations that is not a contact (d = " +
                        detail::format_value(sol.d) +
                        ", a at the centre = " + detail::format_value(a_centre) +
@@ -479,31 +490,33 @@ class LineSolver {
                        " in the solver's units of length; each must be positive)";
         }
         if (!narrow && !(estimate <= sqrt_eps))
-          sol.warnings.push_back(
-              "a root where the Jacobian is nearly singular (a fold of the discrete "
-              "equations): its error estimate max |J^+ r| = " +
-              std::to_string(double(estimate)) +
-              " exceeds sqrt(eps), so the root is not determined to better than the "
-              "discretisation and another root may lie near (docs/line-solver.md, \"Stops short "
-              "of a root\")");
+          add_warning(sol, WarningCode::near_fold,
+                      "a root where the Jacobian is nearly singular (a fold of the discrete "
+                      "equations): its error estimate max |J^+ r| = " +
+                          std::to_string(double(estimate)) +
+                          " exceeds sqrt(eps), so the root is not determined to better than the "
+                          "discretisation and another root may lie near (docs/line-solver.md, "
+                          "\"Stops short "
+                          "of a root\")");
         return sol;
       }
     }
     const Residual res(prob, options_.terms, options_.basis, options_.oversampling,
                        Real(options_.quadrature_tolerance), drop, asymmetric);
-    return failure(u, slow, c, f, vtau, res, Vector::Zero(res.unknowns()), "no stage ran",
-                   iterations);
+    return failure(u, slow, c, f, vtau, res, Vector::Zero(res.unknowns()), StopCode::not_run,
+                   "no stage ran", iterations);
   }
 
   template <class Residual>
   Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
                 const Residual& res, const Vector& x, const Vector& r, bool converged,
-                std::string reason, int iterations) const {
+                StopCode code, std::string reason, int iterations) const {
     const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
     const bool root = converged && rmax <= root_tolerance();
     Solution sol = solution(u, slow, c, f, vtau, res.shape(x), res.penetration(x));
     sol.converged = converged;
     sol.root = root;
+    sol.code = code;
     sol.reason = std::move(reason);
     sol.iterations = iterations;
     sol.residual = rmax;
@@ -519,25 +532,25 @@ class LineSolver {
       sol.chi = detail::line_rolling_friction<Quadrature>(sol);
     }
     add_warnings(sol, u, std::same_as<typename Residual::drop_type, ParabolicDrop>);
-    if (converged && !root) sol.warnings.push_back(detail::minimum_warning(rmax));
+    if (converged && !root)
+      add_warning(sol, WarningCode::least_squares_minimum, detail::minimum_warning(rmax));
     return sol;
   }
 
   template <class Residual>
   Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
-                   const Residual& res, const Vector& x, const char* reason, int iterations) const {
+                   const Residual& res, const Vector& x, StopCode code, const char* reason,
+                   int iterations) const {
     Vector r = Vector::Constant(1, std::numeric_limits<Real>::quiet_NaN());
-    return make(u, slow, c, f, vtau, res, x, r, false, reason, iterations);
+    return make(u, slow, c, f, vtau, res, x, r, false, code, reason, iterations);
   }
 
   /// The domain of the line theory (line_domain_warnings) and chi's sign
   /// (line_chi_sign_warnings), for a solution of either path (one term or a spectrum).
   template <class AnySolution>
   static void add_domain_warnings(AnySolution& sol, const Units& u) {
-    for (auto& w : line_domain_warnings(u.shape_in_caller_units(sol.shape)))
-      sol.warnings.push_back(std::move(w));
-    for (auto& w : line_chi_sign_warnings(sol.converged, sol.chi))
-      sol.warnings.push_back(std::move(w));
+    append_warnings(sol, line_domain_warnings(u.shape_in_caller_units(sol.shape)));
+    append_warnings(sol, line_chi_sign_warnings(sol.converged, sol.chi));
   }
 
   /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid
@@ -548,7 +561,7 @@ class LineSolver {
     add_domain_warnings(sol, u);
     if (!bounds) return;
     const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
-    for (auto& w : line_bound_warnings(sol, tolerance)) sol.warnings.push_back(std::move(w));
+    append_warnings(sol, line_bound_warnings(sol, tolerance));
   }
 
   /// The line solver for a spectrum (docs/theory.md section 14): the terms classified at the
@@ -658,10 +671,12 @@ class LineSolver {
       sol.chi = one.chi;
       sol.converged = one.converged;
       sol.root = one.root;
+      sol.code = one.code;
       sol.reason = one.reason;
       sol.iterations = one.iterations;
       sol.residual = one.residual;
       sol.warnings = one.warnings;
+      sol.warning_codes = one.warning_codes;
       sol.load_compliance = one.f0_per_load();
       if constexpr (ellipsoid) {
         const auto full =
@@ -764,6 +779,7 @@ class LineSolver {
         if (!(*last)(x, r)) {
           out = {};
           out.undefined = true;
+          out.code = StopCode::outside_domain;
           out.reason = "initial guess outside the domain";
           break;
         }
@@ -787,6 +803,7 @@ class LineSolver {
       sol.converged =
           out.converged && !out.undefined && (least_squares || rmax <= root_tolerance());
       sol.root = sol.converged && rmax <= root_tolerance();
+      sol.code = out.converged && !sol.converged ? StopCode::no_descent : out.code;
       sol.reason = out.converged && !sol.converged
                        ? "a least-squares minimum (the spectrum's line equations have no root here)"
                        : out.reason;
@@ -800,12 +817,14 @@ class LineSolver {
       if (sol.converged && !(sol.d > 0 && shape.a(shape.centre) > 0 && shape.l > 0)) {
         sol.converged = false;
         sol.root = false;
+        sol.code = StopCode::not_a_contact;
         sol.reason =
             "a root of the line equations that is not a contact (d, a at the centre or l "
             "not positive)";
       }
       if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
-      if (sol.converged && !sol.root) sol.warnings.push_back(detail::minimum_warning(rmax));
+      if (sol.converged && !sol.root)
+        add_warning(sol, WarningCode::least_squares_minimum, detail::minimum_warning(rmax));
       add_domain_warnings(sol, u);
       return sol;
     };
@@ -821,13 +840,14 @@ class LineSolver {
       Solution seeded = iterate(start);
       if (seeded.converged) {
         seeded.iterations += result.iterations;
-        seeded.warnings.push_back("the iteration from the cold start stopped (" + result.reason +
-                                  "): solved from the seed");
+        add_warning(seeded, WarningCode::solved_from_seed,
+                    "the iteration from the cold start stopped (" + result.reason +
+                        "): solved from the seed");
         result = std::move(seeded);
       } else {
         result.iterations += seeded.iterations;
-        result.warnings.push_back("the iteration from the seed stopped too (" + seeded.reason +
-                                  ")");
+        add_warning(result, WarningCode::seed_failed,
+                    "the iteration from the seed stopped too (" + seeded.reason + ")");
       }
     }
     return detail::in_caller_units(std::move(result), u, c1, inputs);

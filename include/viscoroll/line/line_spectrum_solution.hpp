@@ -12,6 +12,7 @@
 #include <vector>
 #include <viscoroll/core/along_roller.hpp>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
 
@@ -55,9 +56,11 @@ struct LineSpectrumSolution {
   bool converged;                     ///< the iteration met its tolerance (true for a closed form)
   bool root;                          ///< max |r| <= 64 sqrt(eps)
   std::string reason;                 ///< why it stopped
-  int iterations;                     ///< Levenberg-Marquardt iterations (0 for a closed form)
-  Real residual;                      ///< max |r| of the scaled equations
-  std::vector<std::string> warnings;
+  StopCode code = StopCode::converged;     ///< why it stopped, as a code (core/outcome.hpp)
+  int iterations;                          ///< Levenberg-Marquardt iterations (0 for a closed form)
+  Real residual;                           ///< max |r| of the scaled equations
+  std::vector<std::string> warnings;       ///< what qualifies the result, in words
+  std::vector<WarningCode> warning_codes;  ///< the warnings' codes, index for index
   int active_terms;  ///< memory terms solved for at this speed (after merging near-equal times)
   /// Bound on the relative change of the complex compliance made by merging near-equal times
   /// (docs/theory.md (S19), (S20)) plus the share of the terms folded into the compliance or

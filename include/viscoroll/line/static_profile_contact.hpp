@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/roller/profile.hpp>
@@ -69,7 +70,9 @@ struct StaticProfileContact {
   std::vector<Real> y, a_nodes, f0_nodes;
   bool converged = false;
   std::string reason;
+  StopCode code = StopCode::converged;  ///< `reason` as a code (core/outcome.hpp)
   std::vector<std::string> warnings;
+  std::vector<WarningCode> warning_codes;  ///< the warnings' codes, index for index
   Real residual = std::numeric_limits<Real>::quiet_NaN();
   int iterations = 0;
   int points = 0;
@@ -233,8 +236,9 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
 
   StaticProfileContact<Real> out{};
   out.c1 = c1;
-  const auto fail = [&](std::string why) {
+  const auto fail = [&](StopCode code, std::string why) {
     out.converged = false;
+    out.code = code;
     out.reason = std::move(why);
     return out;
   };
@@ -272,8 +276,9 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
         step *= 2;
       }
       if (!found)
-        return fail("the lowest point of the roller is its body end at y = " + text(hi) +
-                    ": the contact reaches the roller's end (outside the line theory)");
+        return fail(StopCode::contact_reaches_body_end,
+                    "the lowest point of the roller is its body end at y = " + text(hi) +
+                        ": the contact reaches the roller's end (outside the line theory)");
       for (int k = 0; k < 200 && abs(hi - lo) > 4 * eps * (abs(lo) + len0); ++k) {
         const Real mid = (lo + hi) / 2;
         (profile.drop_slope(mid) * dir < 0 ? lo : hi) = mid;
@@ -477,12 +482,14 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
   for (; m <= 1024; m *= 2) {
     const detail::StaticProfileMatrices<Real> mat(n, m);
     converged = false;
-    if (!evaluate(mat, x, r, &jac, &tail)) return fail("the starting guess is not admissible");
+    if (!evaluate(mat, x, r, &jac, &tail))
+      return fail(StopCode::outside_domain, "the starting guess is not admissible");
     rnorm = r.template lpNorm<Eigen::Infinity>();
     for (int it = 0; it < 100; ++it) {
       ++iterations;
       const Vector step = jac.colPivHouseholderQr().solve(-r);
-      if (!step.allFinite()) return fail("singular Jacobian of (G1), (G2)");
+      if (!step.allFinite())
+        return fail(StopCode::singular_jacobian, "singular Jacobian of (G1), (G2)");
       Real mu = 1;
       bool accepted = false;
       blocked = false;
@@ -536,24 +543,27 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     // half length of an end; elsewhere a blocked step is only the iteration's failure.
     const bool near_end = out.y_minus - ymin < l / 4 || ymax - out.y_plus < l / 4;
     if ((blocked && near_end) || clip_minus || clip_plus) {
-      out.warnings.push_back("the contact reaches the roller's body end (y_min = " + text(ymin) +
-                             ", y_max = " + text(ymax) +
-                             "): outside the line theory, no solution is returned");
-      return fail("the contact reaches the roller's body end");
+      add_warning(out, WarningCode::contact_at_roller_end,
+                  "the contact reaches the roller's body end (y_min = " + text(ymin) +
+                      ", y_max = " + text(ymax) +
+                      "): outside the line theory, no solution is returned");
+      return fail(StopCode::contact_reaches_body_end, "the contact reaches the roller's body end");
     }
     // A contact not much longer than wide is outside the line theory, which needs l >> a: its
     // equations may then have no root; say so (the line solver's slenderness warning is l/a < 3).
     const Real slenderness = l / a_ref;
-    return fail("Newton's method stopped at residual " + text(rnorm) + " above the tolerance " +
-                text(tolerance) + (m > 1024 ? " (F0 not resolved by 1025 points)" : "") +
-                (slenderness < 3
-                     ? "; the contact found is not slender (half length " + text(l) + ", " +
-                           text(slenderness) + " times the half width): outside the line theory"
-                     : std::string()));
+    return fail(StopCode::tolerance_not_met,
+                "Newton's method stopped at residual " + text(rnorm) + " above the tolerance " +
+                    text(tolerance) + (m > 1024 ? " (F0 not resolved by 1025 points)" : "") +
+                    (slenderness < 3
+                         ? "; the contact found is not slender (half length " + text(l) + ", " +
+                               text(slenderness) + " times the half width): outside the line theory"
+                         : std::string()));
   }
   if (tail > tail_tolerance)
-    return fail("F0 is not resolved by 1025 interpolation points (Chebyshev tail " + text(tail) +
-                "): lower the terms");
+    return fail(StopCode::under_resolved,
+                "F0 is not resolved by 1025 interpolation points (Chebyshev tail " + text(tail) +
+                    "): lower the terms");
   out.converged = true;
   {
     // The resolution: the collocation points' spacing against the local half width (docs/
@@ -567,17 +577,19 @@ StaticProfileContact<typename P::real_type> static_profile_contact(
     }
     out.spacing = worst;
     if (!(worst >= 1))
-      out.warnings.push_back("the collocation points are " + text(worst) +
-                             " half widths apart somewhere (below 1): the discretisation "
-                             "resolves scales below a(y), where (G1) is not elliptic (docs/"
-                             "theory.md, \"Line contact for any roller profile (static)\"); "
-                             "lower the terms");
+      add_warning(out, WarningCode::collocation_spacing,
+                  "the collocation points are " + text(worst) +
+                      " half widths apart somewhere (below 1): the discretisation "
+                      "resolves scales below a(y), where (G1) is not elliptic (docs/"
+                      "theory.md, \"Line contact for any roller profile (static)\"); "
+                      "lower the terms");
   }
   Real amax = 0;
   for (const Real av : out.a_nodes) amax = std::max(amax, av);
   if (!(l >= 3 * amax))
-    out.warnings.push_back("l/max a(y) = " + text(l / amax) +
-                           " < 3: outside the line-contact theory's domain of validity");
+    add_warning(out, WarningCode::short_contact,
+                "l/max a(y) = " + text(l / amax) +
+                    " < 3: outside the line-contact theory's domain of validity");
   return out;
 }
 

@@ -34,6 +34,7 @@
 #include <set>
 #include <string>
 #include <vector>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/numerics/gmres.hpp>
 
@@ -90,8 +91,9 @@ struct ActiveSetReport {
   /// "converged", "active-set iteration limit", "empty contact set", "active set cycles" (a set
   /// seen before: the iteration would repeat) or "GMRES did not converge (relative residual r)".
   std::string reason = "active-set iteration limit";
-  int iterations = 0;         ///< active-set iterations (systems (AS1) solved)
-  int krylov_iterations = 0;  ///< GMRES steps over all of them
+  StopCode code = StopCode::iteration_limit;  ///< `reason` as a code (core/outcome.hpp)
+  int iterations = 0;                         ///< active-set iterations (systems (AS1) solved)
+  int krylov_iterations = 0;                  ///< GMRES steps over all of them
 };
 
 /// Solves the complementarity problem of operator `op`, gap offset h (n values) and load equation
@@ -116,11 +118,13 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
       if (active[q]) cells.push_back(q);
     if (cells.empty()) {
       report.reason = "empty contact set";
+      report.code = StopCode::empty_contact;
       break;
     }
     if (!seen.insert(cells).second) {
       if (!coarse) {
         report.reason = "active set cycles";
+        report.code = StopCode::active_set_cycles;
         break;
       }
       // A coarse iterate returned to a set: from here on every solve is tight.
@@ -193,6 +197,7 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
     }
     if (!rep.converged && !last) {
       // format_value, not std::to_string: "%f" printed a residual of 3e-7 as 0.000000.
+      report.code = StopCode::linear_solver_failed;
       report.reason = "GMRES did not converge (relative residual " +
                       detail::format_value(rep.relative_residual) + ")";
       ++report.iterations;
@@ -226,6 +231,7 @@ ActiveSetReport active_set(const Op& op, const std::vector<Real>& h, const LoadE
     if (!changed) {
       report.converged = true;
       report.reason = "converged";
+      report.code = StopCode::converged;
       ++report.iterations;
       break;
     }

@@ -162,6 +162,7 @@ LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<
           if (accepted && !problem(x, r)) return out.jacobian_undefined();
           out.converged = true;
           out.reason = "least-squares minimum (no root here)";
+          out.code = StopCode::converged;
           ++out.iterations;
           return out;
         }
@@ -189,6 +190,7 @@ LeastSquaresOutcome least_squares_minimum(const Problem& problem, DynamicVector<
     }
     if (!accepted) {
       out.reason = "no descent step (least-squares minimisation)";
+      out.code = StopCode::no_descent;
       return out;
     }
     taken = Taken::earlier;

@@ -13,6 +13,7 @@
 #include <concepts>
 #include <limits>
 #include <string>
+#include <viscoroll/core/outcome.hpp>
 
 namespace viscoroll::numerics {
 
@@ -82,13 +83,15 @@ struct LeastSquaresOutcome {
   bool root_near = false;  ///< least_squares_minimum met a residual below the root tolerance:
                            ///< Levenberg-Marquardt's cue
   std::string reason;      ///< why it stopped, in words
-  int iterations = 0;      ///< iterations taken
+  StopCode code = StopCode::iteration_limit;  ///< why it stopped, as a code (core/outcome.hpp)
+  int iterations = 0;                         ///< iterations taken
 
   /// This outcome, stopped where the Jacobian could not be evaluated.
   LeastSquaresOutcome jacobian_undefined() const {
     LeastSquaresOutcome stop = *this;
     stop.undefined = true;
     stop.reason = "Jacobian undefined";
+    stop.code = StopCode::outside_domain;
     return stop;
   }
 };

@@ -73,6 +73,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     if (!(options.stop_tolerance > 0) || !(r.cwiseAbs().maxCoeff() <= options.stop_tolerance))
       return false;
     out.reason = "stage tolerance";
+    out.code = StopCode::tolerance_not_met;  // the stage's looser tolerance: never a final stop
     return true;
   };
   if (at_stop_tolerance()) return out;
@@ -107,6 +108,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     }
     if (!accepted) {
       out.reason = "no descent step (Levenberg-Marquardt damping exhausted)";
+      out.code = StopCode::no_descent;
       out.minimum = true;
       return out;
     }
@@ -135,6 +137,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
           (newton_step || near_jacobian)) {
         out.converged = true;
         out.reason = "converged";
+        out.code = StopCode::converged;
         ++out.iterations;
         return out;
       }
@@ -146,6 +149,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     if (rmax <= 4 * eps) {
       out.converged = true;
       out.reason = "converged (residual at rounding level)";
+      out.code = StopCode::converged;
       ++out.iterations;
       return out;
     }
@@ -163,6 +167,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
           "stalled: |r|^2 fell by less than 5% over 20 steps (a least-squares minimum, no root "
           "near)";
       out.minimum = true;
+      out.code = StopCode::no_descent;
       ++out.iterations;
       return out;
     }
@@ -177,6 +182,7 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
             "stalled at a least-squares minimum, no root near (|r|^2 falls by < sqrt(eps) per "
             "step)";
         out.minimum = true;
+        out.code = StopCode::no_descent;
         ++out.iterations;
         return out;
       }

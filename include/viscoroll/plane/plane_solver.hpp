@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
@@ -76,7 +77,9 @@ struct PlaneSolution {
   Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51)
   bool converged;    ///< the root for a met the tolerance within the allowed iterations
   int iterations;    ///< root-finder iterations (0 for a static scene)
-  Real residual;     ///< |A^2 + 2 f/(1+f) (V tau/a0) A R - 1| at the returned a
+  StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
+  std::string reason{};                 ///< empty when converged, else why not
+  Real residual;                        ///< |A^2 + 2 f/(1+f) (V tau/a0) A R - 1| at the returned a
   StripPressure<Real, Quadrature> strip;
 
   /// Eq. (35): the pressure at x (moving frame; the cylinder axis is x = 0).
@@ -101,6 +104,8 @@ struct PlaneSpectrumSolution {
   Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51, (S10))
   bool converged;    ///< the root for a met the tolerance within the allowed iterations
   int iterations;    ///< root-finder iterations (0 for a closed form)
+  StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
+  std::string reason{};                 ///< empty when converged, else why not
   Real residual;     ///< |A^2 (1 + 2 G0/a^2) - 1| at the returned a, A = a / a0 of the terms solved
   int active_terms;  ///< retardation terms solved for; the others are relaxed or glassy at V
   Real linear_residual;  ///< relative residual of the linear system (S5) at the returned a
@@ -152,6 +157,12 @@ class PlaneSolver {
   Solution solve(const PlaneScene<Real>& scene) const;
 
  private:
+  /// The reason of a root for a that did not meet its tolerance.
+  static std::string root_failure(int iterations) {
+    return "the root finder for the half width a did not converge in " +
+           std::to_string(iterations) + " iterations (PlaneOptions::max_iterations)";
+  }
+
   /// The rolling solution in `units` (StripUnits; c1, c, vtau and a0 given in them): (P5) for
   /// A = a/a0, then b, G, Q, F0 and chi. Its numbers are in the units too (F0, Q and chi carry
   /// the curvature's: PlaneSolver::solve converts them).
@@ -214,6 +225,8 @@ class PlaneSolver {
                     .chi = c1 * xbar,
                     .converged = converged,
                     .iterations = iterations,
+                    .code = converged ? StopCode::converged : StopCode::root_finder_failed,
+                    .reason = converged ? std::string() : root_failure(iterations),
                     .residual = residual,
                     .strip = StripPressure<Real, Quadrature>(units, c1, a, b, g, vtau, f, c)};
   }
@@ -233,6 +246,8 @@ class PlaneSolver {
                     .chi = Real(0),
                     .converged = true,
                     .iterations = 0,
+                    .code = StopCode::converged,
+                    .reason = {},
                     .residual = Real(0),
                     .strip = strip};
   }
@@ -343,6 +358,17 @@ class PlaneSolver {
                     conditioned.amplification <= detail::spectrum_amplification_limit<Real>() &&
                     s.residual <= rounding;
       s.iterations = iterations;
+      if (!converged) {
+        s.code = StopCode::root_finder_failed;
+        s.reason = root_failure(iterations);
+      } else if (!s.converged) {
+        s.code = StopCode::precision_exhausted;
+        s.reason = "the closed form's rounding (amplification " +
+                   detail::format_value(conditioned.amplification) + ", load residual " +
+                   detail::format_value(s.residual) + ", linear residual " +
+                   detail::format_value(st.residual) +
+                   ") exceeds what this scalar carries (docs/theory.md (S20))";
+      }
       s.linear_residual = st.residual;
       s.amplification = conditioned.amplification;
       s.active_terms = static_cast<int>(merged.size());

@@ -38,6 +38,7 @@
 #include <utility>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/plane/detail/memory_integrals.hpp>
@@ -87,8 +88,9 @@ struct PlaneSubstrateSolution {
   /// Estimated absolute error of the peak pressure (Q13), reported, not asked to meet the
   /// tolerance: a point value converges more slowly than a, d and chi.
   Real error_peak{};
-  bool converged{};      ///< the estimates met the tolerance; see `reason`
-  std::string reason;    ///< empty when converged, else why not (the returned values are the last)
+  bool converged{};    ///< the estimates met the tolerance; see `reason`
+  std::string reason;  ///< empty when converged, else why not (the returned values are the last)
+  StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
   int terms{};           ///< Chebyshev terms N of the returned solution (0 for a spring bed)
   int iterations{};      ///< root-finder evaluations in all
   Real load_residual{};  ///< |int p dx / W - 1| of the returned solution
@@ -637,14 +639,17 @@ class PlaneSubstrateSolver {
     for (const auto& l : levels) roots = roots && l.root_ok;
     s.converged = met && roots && lowest >= -tol * s.peak_.pressure;
     if (!roots)
-      s.reason = "the root finder for the half width a did not converge";
+      set_stop(s, StopCode::root_finder_failed,
+               "the root finder for the half width a did not converge");
     else if (!met)
-      s.reason = "the estimated errors (a " + detail::format_value(s.error_a) + ", d " +
-                 detail::format_value(s.error_d) + ", chi " + detail::format_value(s.error_chi) +
-                 ") exceed the tolerance at max_terms = " + std::to_string(options_.max_terms);
+      set_stop(s, StopCode::tolerance_not_met,
+               "the estimated errors (a " + detail::format_value(s.error_a) + ", d " +
+                   detail::format_value(s.error_d) + ", chi " + detail::format_value(s.error_chi) +
+                   ") exceed the tolerance at max_terms = " + std::to_string(options_.max_terms));
     else if (!s.converged)
-      s.reason = "the pressure is negative (" + detail::format_value(lowest) +
-                 "): the contact is not one interval with square-root edges";
+      set_stop(s, StopCode::not_a_contact,
+               "the pressure is negative (" + detail::format_value(lowest) +
+                   "): the contact is not one interval with square-root edges");
     return s;
   }
 
@@ -828,10 +833,12 @@ class PlaneSubstrateSolver {
                      s.error_chi <= tol * std::max(abs(s.chi), Real(1e-6) * pr.c1 * s.a);
     s.converged = root_ok && met;
     if (!root_ok)
-      s.reason = "the root finder for the leading edge did not converge";
+      set_stop(s, StopCode::root_finder_failed,
+               "the root finder for the leading edge did not converge");
     else if (!met)
-      s.reason = "the quadrature's estimated errors (a " + detail::format_value(s.error_a) +
-                 ", chi " + detail::format_value(s.error_chi) + ") exceed the tolerance";
+      set_stop(s, StopCode::tolerance_not_met,
+               "the quadrature's estimated errors (a " + detail::format_value(s.error_a) +
+                   ", chi " + detail::format_value(s.error_chi) + ") exceed the tolerance");
     return s;
   }
 

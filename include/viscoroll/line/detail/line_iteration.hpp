@@ -62,6 +62,7 @@ numerics::LeastSquaresOutcome least_squares_solution(
   if (!out.converged && !out.undefined && r.cwiseAbs().maxCoeff() <= tolerance) {
     out.converged = true;
     out.reason = "converged (max |r| below the root tolerance, no step lowers it)";
+    out.code = StopCode::converged;
   }
   return out;
 }
