@@ -91,6 +91,10 @@ void solve_and_check(const Material& material, const viscoroll::BemOptions& opti
                   << ", krylov " << s.krylov_iterations << ", cells in contact "
                   << s.contact_cells);
   REQUIRE_FALSE(s.reason.empty());
+  // The warnings and their codes, index for index (core/outcome.hpp); converged exactly when
+  // the code says so.
+  CHECK(s.warning_codes.size() == s.warnings.size());
+  CHECK(s.converged == (s.code == viscoroll::StopCode::converged));
   if (!s.converged) {
     ++tally.not_converged;
     const viscoroll::BemOptions defaults;

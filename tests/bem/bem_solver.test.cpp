@@ -209,7 +209,7 @@ TEST_CASE("bem: non-convergence is reported, inputs are validated", "[bem]") {
   const auto s = BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), o)
                      .solve(BemScene<double>{1.0, c2_paper, load_paper, 1.0});
   CHECK_FALSE(s.converged);
-  CHECK(s.reason == "active-set iteration limit");
+  CHECK(s.code == viscoroll::StopCode::iteration_limit);
   BemOptions bad;
   bad.grid = 1;
   CHECK_THROWS_WITH(BemSolverD(StandardLinearSolid<double>(mu, nu, f, 1.0), bad),

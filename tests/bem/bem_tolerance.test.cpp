@@ -69,6 +69,7 @@ TEST_CASE("bem tolerance: the estimates bound the error against exact Hertz cont
       // 1e-6 C1 a_H, with which the tolerance was met.
       CHECK(std::abs(s.chi) <= 1e-6 * h.a);
       CHECK(s.warnings.empty());
+      CHECK(s.warning_codes.empty());
     }
   }
 }
@@ -130,6 +131,7 @@ TEST_CASE("bem tolerance: one grid estimates nothing; an unmet tolerance is a wa
   CHECK(std::isnan(one.error.d));
   CHECK(std::isnan(one.error.chi));
   CHECK(one.warnings.empty());
+  CHECK(one.warning_codes.empty());
   // 1e-4 in chi needs far more than 16 elements at V tau = 0.01 (the grids 8 and 16 differ by
   // 6.6%).
   const auto short_of_it = refining(1e-4, 8, 16).solve(scene);
@@ -138,7 +140,11 @@ TEST_CASE("bem tolerance: one grid estimates nothing; an unmet tolerance is a wa
   CHECK_FALSE(short_of_it.tolerance_met);
   CHECK(short_of_it.error.chi > 1e-4 * short_of_it.chi);
   REQUIRE(short_of_it.warnings.size() == 1);
-  // Two grids (8, 16) give an estimate, not a verdict: three are needed (E3).
+  // The warnings and their codes, index for index (core/outcome.hpp).
+  REQUIRE(short_of_it.warning_codes.size() == short_of_it.warnings.size());
+  // Two grids (8, 16) give an estimate, not a verdict: three are needed (E3). The text prints
+  // the tolerance as given.
+  CHECK(short_of_it.warning_codes[0] == viscoroll::WarningCode::tolerance_not_verified);
   CHECK_THAT(short_of_it.warnings[0],
              Catch::Contains("the tolerance 0.01% is not verified: it needs three grids"));
   CHECK(short_of_it.error.chi == 5.0 / 4 * std::abs(short_of_it.chi - fixed(8).solve(scene).chi));
@@ -147,6 +153,9 @@ TEST_CASE("bem tolerance: one grid estimates nothing; an unmet tolerance is a wa
   CHECK(three.elements == 32);
   CHECK_FALSE(three.tolerance_met);
   REQUIRE(three.warnings.size() == 1);
+  REQUIRE(three.warning_codes.size() == three.warnings.size());
+  // The text prints the tolerance and the largest grid.
+  CHECK(three.warning_codes[0] == viscoroll::WarningCode::tolerance_not_met);
   CHECK_THAT(three.warnings[0],
              Catch::Contains("the tolerance 0.01% is not met at the largest grid 32 (max_grid)"));
 }

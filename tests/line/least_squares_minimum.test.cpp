@@ -42,6 +42,7 @@ TEST_CASE("line least squares: a strict local minimum where the equations have n
   INFO(s.reason << ", residual " << s.residual << ", iterations " << s.iterations);
   REQUIRE(s.converged);
   REQUIRE_FALSE(s.root);
+  CHECK(viscoroll::has_warning(s, viscoroll::WarningCode::least_squares_minimum));
   CHECK(s.residual > 64 * std::sqrt(eps));
 
   const auto res = solver.residual(paper.scene(3));
@@ -104,6 +105,7 @@ TEST_CASE("line least squares: a strict local minimum where the equations have n
   const auto stalled = LineSolverD(paper.material, plain_options).solve(paper.scene(3));
   INFO("without the minimisation: " << stalled.reason << ", residual " << stalled.residual);
   CHECK_FALSE(stalled.converged);
+  CHECK(stalled.code == viscoroll::StopCode::no_descent);
   Eigen::VectorXd r_stalled;
   REQUIRE(res(res.pack(stalled.shape, stalled.d), r_stalled));
   CHECK(phi < r_stalled.squaredNorm() / 2);
@@ -125,6 +127,7 @@ TEST_CASE("line least squares: a scene with a root is not touched", "[line]") {
     INFO("V tau/a0 = " << vtau << ": " << with.reason << ", residual " << with.residual);
     REQUIRE(with.converged);
     CHECK(with.root);
+    CHECK(with.code == without.code);
     CHECK(with.reason == without.reason);
     CHECK(with.iterations == without.iterations);
     CHECK(with.a(0) == without.a(0));

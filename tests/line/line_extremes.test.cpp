@@ -99,6 +99,8 @@ TEST_CASE(
   // V tau = 1e308 (--speed 1e308): the glassy closed form, a0 (1 + f)^(-1/3).
   const auto glassy = Scene{1, base.c1, base.c2, base.load, 1e308}.solve();
   check_valid(glassy);
+  CHECK(glassy.code == viscoroll::StopCode::converged);
+  // Which closed form has no code of its own: the reason names it.
   CHECK(glassy.reason == "glassy limit (closed form)");
   CHECK(std::abs(glassy.a(0.0) - glassy.a_long_term / std::cbrt(10.0)) <=
         8 * std::numeric_limits<double>::epsilon());
@@ -107,6 +109,7 @@ TEST_CASE(
        {Scene{1, base.c1, base.c2, 1e308, 1}, Scene{1e-308, base.c1, base.c2, base.load, 1}}) {
     const auto st = s.solve();
     check_valid(st);
+    CHECK(st.code == viscoroll::StopCode::converged);
     CHECK(st.reason == "static (closed form)");
     CHECK(std::abs(st.l() / st.a(0.0) - 5) <= 1e-5);  // l0/a0 = 5 for this C2/C1
   }

@@ -35,8 +35,10 @@ bool check(const Solver& solver, const Roller& roller, double load, double speed
            const std::string& where) {
   const auto s = solver.solve(LineProfileScene<Roller>{roller, load, speed});
   INFO(where << ": " << s.reason);
+  CHECK(s.warning_codes.size() == s.warnings.size());
   if (!s.converged) {
     CHECK_FALSE(s.reason.empty());
+    CHECK(s.code != viscoroll::StopCode::converged);
     return false;
   }
   CHECK(std::isfinite(s.d));

@@ -61,13 +61,13 @@ void run(int spectra, int max_terms) {
     }
     INFO("d " << s.d << ", chi " << s.chi << ", active " << s.active_terms << ", spectrum_error "
               << s.spectrum_error << ", " << s.reason);
+    CHECK(s.warning_codes.size() == s.warnings.size());
     if (!s.converged) {
       CHECK(!s.reason.empty());
+      CHECK(s.code != viscoroll::StopCode::converged);
       continue;
     }
-    bool warned = false;
-    for (const auto& w : s.warnings) warned = warned || w.find("chi = ") == 0;
-    CHECK((s.chi >= 0 || warned));
+    CHECK((s.chi >= 0 || viscoroll::has_warning(s, viscoroll::WarningCode::chi_negative)));
     CHECK(s.spectrum_error <= viscoroll::line_spectrum_budget<double>());
     viscoroll::BemOptions options;
     options.grid = 24;

@@ -24,12 +24,6 @@ namespace {
 using viscoroll::testing::spectrum_scene;
 using viscoroll::testing::two_term_creep;
 
-bool warns(const std::vector<std::string>& warnings, const std::string& what) {
-  for (const auto& w : warnings)
-    if (w.find(what) != std::string::npos) return true;
-  return false;
-}
-
 /// The same solution bit for bit: the cold start's, whatever the seed.
 template <class Solution>
 void check_same(const Solution& s, const Solution& cold) {
@@ -113,7 +107,7 @@ TEST_CASE("line spectrum: where the cold start stops short the seed is tried, an
   const auto seeded = short_of_it.solve(spectrum_scene(1.0), &root);
   CAPTURE(seeded.reason, seeded.warnings);
   CHECK(seeded.root);
-  CHECK(warns(seeded.warnings, "the iteration from the cold start stopped"));
+  CHECK(viscoroll::has_warning(seeded, viscoroll::WarningCode::solved_from_seed));
   CHECK(seeded.iterations > cold.iterations);
   // The root to the iteration's step tolerance eps^0.6 (docs/line-solver.md, "Jacobian").
   const double step = std::pow(std::numeric_limits<double>::epsilon(), 0.6);
@@ -126,11 +120,16 @@ TEST_CASE("line spectrum: where the cold start stops short the seed is tried, an
   const auto both = short_of_it.solve(spectrum_scene(1.0), &far);
   CAPTURE(both.reason, both.warnings);
   CHECK_FALSE(both.converged);
-  CHECK(warns(both.warnings, "the iteration from the seed stopped too"));
+  CHECK(both.code == viscoroll::StopCode::iteration_limit);
+  CHECK(viscoroll::has_warning(both, viscoroll::WarningCode::seed_failed));
+  CHECK(both.code == cold.code);
   CHECK(both.reason == cold.reason);
   CHECK(both.a(0.0) == cold.a(0.0));
   CHECK(both.l() == cold.l());
   CHECK(both.iterations > cold.iterations);
+  // Every solution's warnings and their codes, index for index (core/outcome.hpp).
+  for (const auto* s : {&root, &cold, &seeded, &far, &both})
+    CHECK(s->warning_codes.size() == s->warnings.size());
 }
 
 }  // namespace test_line_spectrum_seed

@@ -43,6 +43,9 @@ TEST_CASE("line stage tolerance: fast() lands on the full end game's roots at 10
     INFO("V tau/a0 = " << vtau << ": " << a.reason << " / " << b.reason);
     REQUIRE(b.converged);
     REQUIRE(a.converged);
+    // The stage tolerance stops intermediate stages only, never the last.
+    CHECK(a.code == viscoroll::StopCode::converged);
+    CHECK(b.code == viscoroll::StopCode::converged);
     viscoroll::testing::check_same_root(a, b, bound);
     if (a.iterations < b.iterations) ++fewer;
   }

@@ -48,6 +48,7 @@ TEST_CASE("static profile contact: the ellipsoid is Kalker's closed form (48)") 
       REQUIRE(s.converged);
       // l/a0 = 2.9 at C2/C1 = 0.2: outside the slender domain, said so.
       CHECK(s.warnings.empty() == (k.l >= 3 * k.a0));
+      CHECK(viscoroll::has_warning(s, viscoroll::WarningCode::short_contact) == !(k.l >= 3 * k.a0));
       CHECK(rel<double>(s.d, k.d) < 1e-12);
       CHECK(rel<double>(s.half_length(), k.l) < 1e-12);
       CHECK(std::abs(s.centre()) < 1e-12 * k.l);
@@ -116,6 +117,7 @@ TEST_CASE("static profile contact: a long flat part carries the strip of (G1) at
   const auto s = static_profile_contact(roller, cl);
   REQUIRE(s.converged);
   CHECK(s.warnings.empty());
+  CHECK(s.warning_codes.empty());
   CHECK(s.y_plus > 20);  // the ends lie on the crowns
   CHECK(s.half_length() > 50 * s.a(0.0));
   const double l = s.half_length(), c = s.centre();
@@ -146,8 +148,11 @@ TEST_CASE("static profile contact: logarithmic crown, body ends and bad input") 
   // theory does not describe: reported, not clipped.
   const auto e = static_profile_contact(CrownedCylinder<double>(1.0, 10.0, 20.0, 11.0), 3.0);
   CHECK_FALSE(e.converged);
-  CHECK(e.reason.find("body end") != std::string::npos);
+  CHECK(e.code == viscoroll::StopCode::contact_reaches_body_end);
   REQUIRE(e.warnings.size() == 1);
+  REQUIRE(e.warning_codes.size() == 1);
+  CHECK(e.warning_codes[0] == viscoroll::WarningCode::contact_at_roller_end);
+  // The warning prints where the body ends.
   CHECK(e.warnings[0].find("y_max = 5.5") != std::string::npos);
   const EllipsoidProfile<double> ell(1.0, 0.1);
   CHECK_THROWS_WITH(static_profile_contact(ell, -1.0),
@@ -178,9 +183,12 @@ TEST_CASE("static profile contact: off the roller's centre, and a short contact 
       3.98e-6);
   INFO(shortc.reason);
   CHECK_FALSE(shortc.converged);
+  CHECK(shortc.code == viscoroll::StopCode::tolerance_not_met);
+  // No code says "short": the reason names the shortness (the test's point), not the body end.
   CHECK(shortc.reason.find("not slender") != std::string::npos);
-  CHECK(shortc.reason.find("body end") == std::string::npos);
+  CHECK(shortc.code != viscoroll::StopCode::contact_reaches_body_end);
   CHECK(shortc.warnings.empty());
+  CHECK(shortc.warning_codes.empty());
 }
 
 }  // namespace test_static_profile_contact

@@ -130,8 +130,10 @@ void check_static_line(const Solution& s, Real c1, Real c2, Real load, Real c_ef
   using std::sqrt;
   const Real a0 = s.a(Real(0)), l = s.l();
   INFO("a(0) = " << a0 << ", l = " << l << ", d = " << s.d << ", reason " << s.reason);
+  // Which closed form has no code of its own (converged, 0 iterations): the reason names it.
   CHECK(s.reason == reason);
   CHECK(s.converged);
+  CHECK(s.code == viscoroll::StopCode::converged);
   CHECK(s.iterations == 0);
   CHECK(s.residual == 0);
   CHECK(s.chi == 0);

@@ -62,7 +62,7 @@ TEST_CASE("numerics: Levenberg-Marquardt steps back from outside the domain", "[
   const auto stop = levenberg_marquardt(problem, outside, r_outside);
   REQUIRE(stop.undefined);
   REQUIRE_FALSE(stop.converged);
-  REQUIRE(stop.reason == "Jacobian undefined");
+  REQUIRE(stop.code == viscoroll::StopCode::outside_domain);
   REQUIRE(stop.iterations == 0);
   REQUIRE(outside[0] == -1);
 }
@@ -75,7 +75,7 @@ TEST_CASE("numerics: Levenberg-Marquardt reports its iteration limit", "[numeric
   const auto out = levenberg_marquardt(problem, x, r, {.max_iterations = 3});
   REQUIRE_FALSE(out.converged);
   REQUIRE_FALSE(out.minimum);
-  REQUIRE(out.reason == "iteration limit");
+  REQUIRE(out.code == viscoroll::StopCode::iteration_limit);
   REQUIRE(out.iterations == 3);
   // The last accepted iterate, lower than the start: every step lowered |r|^2.
   require_residual_at(problem, x, r);
@@ -93,6 +93,7 @@ TEST_CASE("numerics: Levenberg-Marquardt stops at a minimum with no root near", 
   INFO(out.reason << " after " << out.iterations << " iterations, x = " << x.transpose());
   REQUIRE(out.minimum);
   REQUIRE_FALSE(out.converged);
+  REQUIRE(out.code == viscoroll::StopCode::no_descent);
   require_residual_at(problem, x, r);
   // In the minimum's basin, phi is not below the minimum's (to its rounding).
   REQUIRE(r.squaredNorm() / 2 >= FreudensteinRoth::minimum_phi() * (1 - 4 * eps));
@@ -108,7 +109,8 @@ TEST_CASE("numerics: Levenberg-Marquardt's stop tolerance and starting damping",
   const LeastSquaresOptions<double> stop{.stop_tolerance = 1e-2};
   const auto out = levenberg_marquardt(problem, x, r, stop);
   INFO(out.reason << " after " << out.iterations << " iterations, x = " << x.transpose());
-  REQUIRE(out.reason == "stage tolerance");
+  // The code of the stage's stop, never a final one.
+  REQUIRE(out.code == viscoroll::StopCode::tolerance_not_met);
   REQUIRE_FALSE(out.converged);
   REQUIRE_FALSE(out.minimum);
   REQUIRE(out.iterations >= 1);
@@ -116,7 +118,7 @@ TEST_CASE("numerics: Levenberg-Marquardt's stop tolerance and starting damping",
   REQUIRE(r.cwiseAbs().maxCoeff() <= 1e-2);
   const LsqVector held = x;
   const auto again = levenberg_marquardt(problem, x, r, stop);
-  REQUIRE(again.reason == "stage tolerance");
+  REQUIRE(again.code == viscoroll::StopCode::tolerance_not_met);
   REQUIRE(again.iterations == 0);
   REQUIRE(x == held);
 

@@ -119,6 +119,8 @@ TEST_CASE("plane substrate: a solution short of the tolerance says why", "[plane
   const auto s = PlaneSubstrateSolver(m, Layer<double>(0.1), options)
                      .solve(PlaneScene<double>{.c1 = 1.0, .load = 100.0, .speed = 0.0});
   CHECK_FALSE(s.converged);
+  CHECK(s.code == viscoroll::StopCode::tolerance_not_met);
+  // The reason names the limit that stopped it, with its value.
   CHECK_THAT(s.reason, Contains("exceed the tolerance") && Contains("max_terms = 8"));
 }
 

@@ -116,6 +116,8 @@ long double check_fields(const Solution& s, Real p_tolerance) {
   const auto domain = viscoroll::line_domain_warnings(s.shape);
   CHECK(narrow == !domain.empty());
   CHECK(s.warnings.size() == domain.size() + (s.root ? 0 : 1));
+  CHECK(s.warning_codes.size() == s.warnings.size());
+  CHECK(viscoroll::has_warning(s, viscoroll::WarningCode::least_squares_minimum) == !s.root);
   return worst;
 }
 
@@ -149,6 +151,8 @@ void check_closed_form(const Cell<Real>& cell, Real speed, bool glassy) {
        << " " << cell.name() << " speed " << speed << ": " << s.reason);
   REQUIRE(s.converged);
   CHECK(s.iterations == 0);
+  CHECK(s.code == viscoroll::StopCode::converged);
+  // A closed form has no code of its own (converged, 0 iterations): its reason names it.
   CHECK(s.reason.find("closed form") != std::string::npos);
   CHECK(s.residual == 0);
   check_fields(s, Real(0));
@@ -224,12 +228,11 @@ Outcome<Real> check_iterated(const Cell<Real>& cell, int terms) {
                           s.d,         s.chi,        s.residual,   seconds};
   CHECK(s.iterations > 0);  // not a closed form
   if (!s.converged) {
-    // Honest failure: a reason, and either finite numbers or the documented NaN residual of an
-    // iterate that left the equations' domain.
+    // Honest failure: a reason and its code, and either finite numbers or the documented NaN
+    // residual of an iterate that left the equations' domain.
     CHECK_FALSE(s.reason.empty());
-    CHECK(s.reason.find("converged") == std::string::npos);
-    if (!finite(s.residual))
-      CHECK((s.reason == "Jacobian undefined" || s.reason == "initial guess outside the domain"));
+    CHECK(s.code != viscoroll::StopCode::converged);
+    if (!finite(s.residual)) CHECK(s.code == viscoroll::StopCode::outside_domain);
     report(name + ": NOT CONVERGED (" + s.reason + "), residual " + str(s.residual) + ", " +
            str(seconds) + " s");
     return out;
@@ -237,9 +240,10 @@ Outcome<Real> check_iterated(const Cell<Real>& cell, int terms) {
   if (s.root) {
     CHECK(s.residual <= 64 * sqrt(eps<Real>()));  // what a root promises
   } else {
-    // A least-squares minimum where the equations have no root (docs/line-solver.md): the reason
+    // A least-squares minimum where the equations have no root (docs/line-solver.md): a warning
     // says so, and the residual is reported.
-    CHECK(s.reason.starts_with("least-squares minimum"));
+    CHECK(s.code == viscoroll::StopCode::converged);
+    CHECK(viscoroll::has_warning(s, viscoroll::WarningCode::least_squares_minimum));
     CHECK(s.residual > 64 * sqrt(eps<Real>()));
   }
   // docs/errors.md: p >= -1e-6 of the strip's mean pressure on sampled strips.
