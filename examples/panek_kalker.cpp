@@ -101,9 +101,13 @@ int main(int argc, char** argv) {
     return solver.solve(
         viscoroll::LineScene<double>{.c1 = c1, .c2 = c2, .load = load, .speed = vtau / tau}, start);
   };
-  // Continuation: seed with the last converged solution (the solver's own seed otherwise).
+  // Continuation from the previous speed.
   std::optional<Solution> last;
-  auto seed = [&]() -> const Solution* { return last && last->converged ? &*last : nullptr; };
+  // The previous speed's solution where it is a converged root; a least-squares minimum seeds
+  // nothing (the rule of viscoroll::sweep, sweep.hpp, which vr.sweep follows too).
+  auto seed = [&]() -> const Solution* {
+    return last && last->converged && last->root ? &*last : nullptr;
+  };
 
   // Fig. 3 and 4: the sweep.
   std::ofstream sweep(args.dir / "panek_kalker_sweep.csv");

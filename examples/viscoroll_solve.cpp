@@ -751,8 +751,9 @@ struct Timed {
   struct Solution {
     typename Solver::Solution s;
     double seconds;
-    bool converged;  ///< s.converged, and
-    int iterations;  ///< s.iterations, for the sweep's choice of seed
+    bool converged;  ///< s.converged,
+    int iterations;  ///< s.iterations and
+    bool root;       ///< s.root (true for a solver without one), for the sweep's choice of seed
   };
   const Solver& solver;
 
@@ -769,7 +770,9 @@ struct Timed {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool converged = s.converged;
     const int iterations = s.iterations;
-    return {std::move(s), seconds, converged, iterations};
+    bool root = true;
+    if constexpr (requires { s.root; }) root = s.root;
+    return {std::move(s), seconds, converged, iterations, root};
   }
 };
 

@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev           # viscoroll-solve's scene files (the command-line tool only)
   catch2 libbenchmark-dev      # tests, benchmarks
   gnuplot-nox                  # figures
+  doxygen                      # the API reference (the docs target, docs/reference.md)
   libfftw3-dev                 # optional FFT back end
   clang libclang-rt-14-dev     # libFuzzer target (scripts/fuzz.sh)
   pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)

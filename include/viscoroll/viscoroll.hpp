@@ -6,6 +6,15 @@
 // viscoelastic half space", J. Inst. Maths Applics (1980).
 #pragma once
 
+/// @mainpage viscoroll
+///
+/// The steady contact of a rigid roller rolling on viscoelastic rubber: the line-contact theory
+/// of Panek & Kalker (1980), the plane problem and a 3-D boundary-element reference. Everything
+/// is in namespace viscoroll (bem::, numerics::, special:: below it); this reference lists each
+/// public name with its header's comments. docs/reference.md gives the API by component and
+/// docs/guide.md how to use it; names in detail namespaces and headers under detail/ are
+/// internal and not listed.
+
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/errors.hpp>
 #include <viscoroll/core/strip.hpp>

@@ -197,6 +197,7 @@ struct TimedSolver {
     SolvedPtr solved;
     bool converged = false;
     int iterations = 0;
+    bool root = true;  ///< inner.root where the solution has one: a minimum seeds nothing
   };
 
   const Solver& solver;
@@ -215,6 +216,7 @@ struct TimedSolver {
     Solution out{std::move(inner), nullptr, false, 0};
     out.converged = out.inner.converged;
     out.iterations = out.inner.iterations;
+    if constexpr (requires { out.inner.root; }) out.root = out.inner.root;
     out.solved = make(out.inner, scene.speed, seconds);
     return out;
   }

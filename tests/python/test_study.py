@@ -124,6 +124,13 @@ def test_a_seeded_method_continues_within_a_chunk_as_sweep_does():
     assert after
     for k in after:
         assert seeded["a0"].values[k] == cold["a0"][k] and seeded["chi"].values[k] == cold["chi"][k]
+    # sweep() keeps the same rule: over these speeds, minima among them, it is the study bit for
+    # bit (its chunks of 16 as the study's).
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        swept = vr.sweep(paper, speeds=speeds, method="line")
+    assert np.array_equal(seeded["chi"].values, swept["chi"])
+    assert np.array_equal(seeded["a0"].values, swept["a0"])
 
 
 def test_a_dask_cluster_gives_the_local_numbers_bit_for_bit(local, monkeypatch):

@@ -37,6 +37,7 @@ struct BemScene {
   /// contact reaches a cell at an end; the gap beyond is the profile's (bem_scene() makes it a
   /// chamfer, bem_profile.hpp).
   Real y_min = -std::numeric_limits<Real>::infinity();
+  /// The body's end on the side y > 0 (+inf: none).
   Real y_max = std::numeric_limits<Real>::infinity();
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, c2 > 0, 1e-10 <= c2/c1 <=
@@ -51,6 +52,11 @@ struct BemScene {
     detail::require_non_negative("speed", speed);
     detail::require(y_min < 0, "y_min", y_min, "y_min < 0 (the body holds the section y = 0)");
     detail::require(y_max > 0, "y_max", y_max, "y_max > 0 (the body holds the section y = 0)");
+  }
+  /// "c1 = ..., c2 = ..., load = ..., speed = ...": the scene in an error's message.
+  std::string describe() const {
+    return "c1 = " + detail::format_value(c1) + ", c2 = " + detail::format_value(c2) +
+           ", load = " + detail::format_value(load) + ", speed = " + detail::format_value(speed);
   }
 
   /// h(x, y): the profile, or c1 x^2/2 + c2 y^2/2.
@@ -80,6 +86,7 @@ struct BemOptions {
   /// GMRES stops at relative residual `gmres_tolerance` (or 32 eps of the scalar, if larger);
   /// the active set must then be unchanged.
   double gmres_tolerance = 1e-10;
+  /// The largest number of active-set iterations.
   int max_active_set_iterations = 200;
   int max_krylov_iterations = 5000;  ///< GMRES steps over all active-set iterations
   int restart = 80;                  ///< GMRES steps per cycle
@@ -149,12 +156,22 @@ struct BemOptions {
 ///   - size(): nx ny; index(i, j): i + nx j.
 template <RealScalar Real>
 struct BemGrid {
+  /// The cells per row (x) and per column (y), odd.
+  ///@{
   int nx, ny;
+  ///@}
+  /// The cell's size along x and along y.
+  ///@{
   Real hx, hy;
+  ///@}
 
+  /// The centre of column i.
   Real x(int i) const { return Real(i - (nx - 1) / 2) * hx; }
+  /// The centre of row j.
   Real y(int j) const { return Real(j - (ny - 1) / 2) * hy; }
+  /// nx ny, the number of cells.
   std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
+  /// The flat index of cell (i, j): i + nx j.
   std::size_t index(int i, int j) const {
     return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(j);
   }
@@ -176,8 +193,10 @@ Real edge_offset(Real p_last, Real p_prev) {
 /// and leading edges of the stretch of contact cells around it, by edge_offset (B12).
 template <RealScalar Real>
 struct RowContact {
-  Real p_max = 0;                  ///< the row's largest pressure (first cell of several)
+  Real p_max = 0;  ///< the row's largest pressure (first cell of several)
+  ///@{
   Real trailing = 0, leading = 0;  ///< the edges; both 0 when p_max <= 0
+  ///@}
 };
 
 /// RowContact of row j of the cell pressures p on grid g.
@@ -208,10 +227,15 @@ RowContact<Real> row_contact(const BemGrid<Real>& g, const std::vector<Real>& p,
 /// cell (hx, hy). Absolute, in the quantity's units; NaN where not estimated.
 template <RealScalar Real>
 struct BemErrorEstimate {
+  /// Of the penetration d.
   Real d = std::numeric_limits<Real>::quiet_NaN();
+  /// Of the rolling friction coefficient chi.
   Real chi = std::numeric_limits<Real>::quiet_NaN();
+  /// Of the half width a(0).
   Real a0 = std::numeric_limits<Real>::quiet_NaN();
+  /// Of the offset b(0).
   Real b0 = std::numeric_limits<Real>::quiet_NaN();
+  /// Of the half length l.
   Real l = std::numeric_limits<Real>::quiet_NaN();
   Real p_max = std::numeric_limits<Real>::quiet_NaN();  ///< of peak_pressure()
 };
@@ -219,6 +243,7 @@ struct BemErrorEstimate {
 /// The boundary-element solution: pressure on the grid, the contact's measures, diagnostics.
 template <RealScalar Real>
 struct BemSolution {
+  /// The grid the solution was computed on.
   BemGrid<Real> grid;
   std::vector<Real> pressure;  ///< cell pressures, flat index i + nx j (grid.index)
   std::vector<Real> gap;  ///< g = u - d + h at the cell centres (0 in contact to the tolerance)

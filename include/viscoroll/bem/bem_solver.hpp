@@ -60,10 +60,14 @@ requires std::same_as<typename Material::real_type, Real> &&
     NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
 class BemSolver {
  public:
+  /// The solution type.
   using Solution = BemSolution<Real>;
+  /// A complex number of the scalar.
   using Complex = std::complex<Real>;
+  /// The type the influence coefficients are computed in (at least double).
   using W = bem::coefficient_real_t<Real>;
 
+  /// Throws std::invalid_argument for invalid options (BemOptions::validate).
   explicit BemSolver(Material material, BemOptions options = {})
       : material_(std::move(material)), options_(options) {
     options_.validate();
@@ -84,7 +88,9 @@ class BemSolver {
           bem::substrate_kernel<W>(substrate, W(material_.nu())));
   }
 
+  /// The material.
   const Material& material() const { return material_; }
+  /// The settings.
   const BemOptions& options() const { return options_; }
 
   /// The grid the solver uses for a scene: grid elements per semi-axis of the long-term static
@@ -175,31 +181,7 @@ class BemSolver {
                                                const BemGrid<Real>& grid,
                                                const HertzContact<Real>& hertz,
                                                const std::vector<PronyTerm<Real>>& terms,
-                                               Real compliance, const Solution* start) const {
-    const std::size_t n = grid.size();
-    numerics::ActiveSetState<Real> state{
-        .p = std::vector<Real>(n, Real(0)), .d = hertz.d, .active = std::vector<char>(n, 0)};
-    if (start != nullptr && start->grid.nx == grid.nx && start->grid.ny == grid.ny &&
-        start->grid.hx == grid.hx && start->grid.hy == grid.hy && start->pressure.size() == n) {
-      for (std::size_t q = 0; q < n; ++q) {
-        state.active[q] = start->pressure[q] > 0;
-        state.p[q] = start->pressure[q] * scene.load / start->load;
-      }
-      state.d = start->d;
-      return state;
-    }
-    Real weight = 0;
-    for (const auto& t : terms) weight += t.f * hertz.a / (hertz.a + scene.speed * t.tau);
-    const auto guess = hertz_contact(scene.c1, scene.c2, (1 + weight) * compliance, scene.load);
-    for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i) {
-        const Real px = guess.pressure(grid.x(i), grid.y(j));
-        state.active[grid.index(i, j)] = px > 0;
-        state.p[grid.index(i, j)] = px;
-      }
-    state.d = guess.d;
-    return state;
-  }
+                                               Real compliance, const Solution* start) const;
 
   /// (B18): a local bed's contact, exactly. Its rows are independent and its operator is
   /// triangular along x (a cell sinks under its own pressure and, through the memory of Eq. (2),
@@ -211,35 +193,7 @@ class BemSolver {
   /// couplings are positive, the operator is not an M-matrix).
   static numerics::ActiveSetState<Real> local_bed_state(
       const BemGrid<Real>& grid, const bem::InfluenceTable<Real, Quadrature>& table,
-      const std::vector<Real>& h, Real load, Real d_scale) {
-    const std::size_t n = grid.size();
-    std::vector<Real> p(n);
-    const Real k0 = table(0, 0), area = grid.hx * grid.hy;
-    const auto sweep = [&](Real d) {
-      Real total = 0;
-      for (int j = 0; j < grid.ny; ++j)
-        for (int i = grid.nx - 1; i >= 0; --i) {
-          Real u = 0;
-          for (int k = i + 1; k < grid.nx; ++k) u += table(i - k, 0) * p[grid.index(k, j)];
-          const Real v = std::max(Real(0), (d - h[grid.index(i, j)] - u) / k0);
-          p[grid.index(i, j)] = v;
-          total += v;
-        }
-      return total * area - load;
-    };
-    Real hi = d_scale, f_hi = sweep(hi);
-    for (int k = 0; k < 200 && f_hi < 0; ++k) f_hi = sweep(hi *= 2);
-    Real lo = 0;
-    std::uintmax_t iterations = 200;
-    const auto root = boost::math::tools::toms748_solve(
-        sweep, lo, hi, sweep(lo), f_hi,
-        boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 2), iterations);
-    const Real d = (root.first + root.second) / 2;
-    sweep(d);
-    numerics::ActiveSetState<Real> state{.p = p, .d = d, .active = std::vector<char>(n, 0)};
-    for (std::size_t q = 0; q < n; ++q) state.active[q] = p[q] > 0;
-    return state;
-  }
+      const std::vector<Real>& h, Real load, Real d_scale);
 
   /// The contact of (B11): the active-set iteration (numerics/active_set.hpp) on the gap
   /// g = u - d + h of the cell centres (Eqs. 13, 27) under the load hx hy sum p = P, its load row
@@ -248,36 +202,7 @@ class BemSolver {
                    const HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
                    const std::vector<Complex>& symbol, const std::vector<PronyTerm<Real>>& terms,
                    Real compliance, int length_exponent, const Solution* start,
-                   const bem::InfluenceTable<Real, Quadrature>* local = nullptr) const {
-    std::vector<Real> h(grid.size());
-    for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i)
-        h[grid.index(i, j)] = scene.gap_profile(grid.x(i), grid.y(j));
-    auto state = local != nullptr ? local_bed_state(grid, *local, h, scene.load, hertz.d)
-                                  : initial_state(scene, grid, hertz, terms, compliance, start);
-    // GMRES' tolerance, but no tighter than the scalar allows (32 eps).
-    const Real tol =
-        std::max(Real(options_.gmres_tolerance), 32 * std::numeric_limits<Real>::epsilon());
-    // The final solve's, likewise (none where that is not below tol, e.g. in float).
-    const Real final_tol =
-        options_.final_tolerance > 0
-            ? std::max(Real(options_.final_tolerance), 32 * std::numeric_limits<Real>::epsilon())
-            : Real(0);
-    const auto report = numerics::active_set(
-        ActiveSetOperator{op, options_.precondition ? &symbol : nullptr}, h,
-        numerics::LoadEquation<Real>{
-            .weight = grid.hx * grid.hy, .total = scene.load, .scale = hertz.d},
-        numerics::ActiveSetSettings<Real>{.tolerance = tol,
-                                          .restart = options_.restart,
-                                          .max_iterations = options_.max_active_set_iterations,
-                                          .max_krylov_iterations = options_.max_krylov_iterations,
-                                          .coarse_tolerance = Real(options_.coarse_tolerance),
-                                          .final_tolerance = final_tol},
-        state);
-    Solution sol = measure(scene, grid, hertz, op, h, std::move(state), report);
-    judge(sol, scene, terms, length_exponent);
-    return sol;
-  }
+                   const bem::InfluenceTable<Real, Quadrature>* local = nullptr) const;
 
   /// The solution of the last iterate: the gap, the load, chi (Eq. 51 on piecewise-constant
   /// cells), the edges (B12) and the residual, the largest violation of p >= 0, g >= 0, p g = 0
@@ -285,175 +210,21 @@ class BemSolver {
   static Solution measure(const BemScene<Real>& scene, const BemGrid<Real>& grid,
                           const HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
                           const std::vector<Real>& h, numerics::ActiveSetState<Real> state,
-                          const numerics::ActiveSetReport& report) {
-    using std::abs;
-    const std::vector<Real>& p = state.p;
-    const Real d = state.d, d_ref = hertz.d;
-    std::vector<Real> u(grid.size()), gap(grid.size());
-    op.apply(p, u);
-    Real violation = 0, pmax = 0, load = 0, moment = 0;
-    int contact = 0;
-    for (const Real v : p) pmax = std::max(pmax, v);
-    bool touches_edge = false;
-    for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i) {
-        const std::size_t q = grid.index(i, j);
-        const Real g = u[q] - d + h[q];
-        gap[q] = g;
-        if (p[q] > 0) {
-          ++contact;
-          violation = std::max(violation, abs(g) / d_ref);
-          if (i == 0 || j == 0 || i == grid.nx - 1 || j == grid.ny - 1) touches_edge = true;
-        } else {
-          violation = std::max(violation, std::max(-g, Real(0)) / d_ref);
-          violation = std::max(violation, -p[q] / pmax);
-        }
-        load += p[q];
-        moment += grid.x(i) * p[q];
-      }
-    const Real area = grid.hx * grid.hy, total = load * area;
-    const auto edges = locate_edges(grid, p);
-    return {.grid = grid,
-            .pressure = std::move(state.p),
-            .gap = std::move(gap),
-            .d = d,
-            .a0 = edges.a0,
-            .b0 = edges.b0,
-            .l = edges.l,
-            .chi = scene.c1 * moment / load,
-            .load = total,
-            .long_term = hertz,
-            .contact_cells = contact,
-            .converged = report.converged && !touches_edge,
-            .reason = touches_edge ? "contact reaches the grid boundary (increase extent)"
-                                   : report.reason,
-            .code = touches_edge ? StopCode::contact_reaches_grid_boundary : report.code,
-            .iterations = report.iterations,
-            .krylov_iterations = report.krylov_iterations,
-            .residual = std::max(violation, abs(total - scene.load) / scene.load),
-            .warnings = {},
-            .warning_codes = {},
-            .elements = 0,
-            .error = {},
-            .tolerance_met = false,
-            .seconds_setup = 0,
-            .seconds_solve = 0};
-  }
+                          const numerics::ActiveSetReport& report);
 
   /// What a converged solution does not claim: a contact under three cells across, where (B13)
   /// gives no error bound, is not converged; a pressure front sharper than the grid leaves a(0)
   /// and b(0) unclaimed (a warning); a non-finite value makes the residual NaN and the solution
   /// not converged.
   void judge(Solution& sol, const BemScene<Real>& scene, const std::vector<PronyTerm<Real>>& terms,
-             int length_exponent) const {
-    const auto& grid = sol.grid;
-    // A contact spanning fewer than three cells across (on y = 0) or fewer than three rows has no
-    // discretisation error bound (B13 assumes a few cells per semi-axis): the glassy contact of a
-    // large creep ratio on a grid sized by the long-term one, e.g. f = 1e4 at V tau = 1e4 a0 with
-    // grid 8 (one cell, a(0) off by 35%). Not claimed: the user must refine the grid.
-    if (sol.converged && (boost::math::isfinite)(sol.a0) && (boost::math::isfinite)(sol.l)) {
-      const int cells_x = static_cast<int>(std::lround(static_cast<double>(2 * sol.a0 / grid.hx)));
-      const int cells_y = static_cast<int>(std::lround(static_cast<double>(2 * sol.l / grid.hy)));
-      if (cells_x < 3 || cells_y < 3) {
-        sol.converged = false;
-        sol.code = StopCode::under_resolved;
-        sol.reason = "contact resolved by fewer than 3 cells across (" + std::to_string(cells_x) +
-                     " x " + std::to_string(cells_y) + "; increase grid)";
-      }
-    }
-    // (B12) assumes a square-root edge. When the memory length V tau_k exceeds a cell while the
-    // leading-edge layer V tau_k/(1 + f) is under a quarter cell, the pressure front is a step on
-    // the grid (f = 1e4 at V tau = a0, grid 8: a(0) = 0.43 a0 against the line theory's 0.56;
-    // d and chi agree with it to 1e-5 and 1.5%): a(0) and b(0) are then not claimed.
-    if (sol.converged) {
-      const Real f_total = material_.creep_ratio();
-      for (const auto& t : terms) {
-        const Real memory = scene.speed * t.tau;
-        if (memory > grid.hx && memory / (1 + f_total) < grid.hx / 4) {
-          add_warning(sol, WarningCode::edge_layer_unresolved,
-                      "leading-edge layer V tau/(1 + f) = " +
-                          detail::format_binary(memory / (1 + f_total), length_exponent) +
-                          " is under a quarter cell (hx = " +
-                          detail::format_binary(grid.hx, length_exponent) +
-                          "): a0 and b0 are not resolved");
-          break;
-        }
-      }
-    }
-    // A contact that reaches the roller's end (a cell whose neighbour lies beyond the body) has
-    // a pressure peak there that only the grid bounds (bem_profile.hpp).
-    if (sol.converged && (scene.y_min > -std::numeric_limits<Real>::infinity() ||
-                          scene.y_max < std::numeric_limits<Real>::infinity())) {
-      for (int j = 0; j < grid.ny; ++j) {
-        const Real y = grid.y(j);
-        if (!(y - grid.hy <= scene.y_min || y + grid.hy >= scene.y_max)) continue;
-        if (!(y > scene.y_min && y < scene.y_max)) continue;
-        bool loaded = false;
-        for (int i = 0; i < grid.nx && !loaded; ++i) loaded = sol.p(i, j) > 0;
-        if (loaded) {
-          add_warning(
-              sol, WarningCode::contact_at_roller_end,
-              "the contact reaches the roller's end at y = " +
-                  detail::format_binary(y < 0 ? scene.y_min : scene.y_max, length_exponent) +
-                  ": its end pressure peak is resolved only to the grid (hy = " +
-                  detail::format_binary(grid.hy, length_exponent) +
-                  "); the line theory does not apply there");
-          break;
-        }
-      }
-    }
-    // std::max skips a NaN in its second argument: a result with a non-finite number gets a NaN
-    // residual and is never reported converged.
-    bool finite = (boost::math::isfinite)(sol.d) && (boost::math::isfinite)(sol.load) &&
-                  (boost::math::isfinite)(sol.chi) && (boost::math::isfinite)(sol.a0) &&
-                  (boost::math::isfinite)(sol.b0) && (boost::math::isfinite)(sol.l);
-    for (std::size_t q = 0; q < sol.pressure.size() && finite; ++q)
-      finite = (boost::math::isfinite)(sol.pressure[q]) && (boost::math::isfinite)(sol.gap[q]);
-    if (!finite) {
-      sol.residual = std::numeric_limits<Real>::quiet_NaN();
-      if (sol.converged) {
-        sol.converged = false;
-        sol.code = StopCode::non_finite;
-        sol.reason = "non-finite value in the solution";
-      }
-    }
-  }
+             int length_exponent) const;
 
   struct Edges {
     Real a0, b0, l;
   };
 
   /// (B12): a(0), b(0) and l of the pressure p on grid g.
-  static Edges locate_edges(const BemGrid<Real>& g, const std::vector<Real>& p) {
-    const auto at = [&](int i, int j) { return p[g.index(i, j)]; };
-    const int j0 = (g.ny - 1) / 2;
-    const auto centre = bem::row_contact(g, p, j0);
-    if (!(centre.p_max > 0)) return {Real(0), Real(0), Real(0)};
-    const Real xl = centre.leading, xt = centre.trailing;
-    // l: the row loads F0(y_j) = hx sum_i p vanish linearly in y^2 at an elliptic tip (exactly
-    // so for Hertz, (B12)); extrapolate the last two loaded rows to zero.
-    std::vector<Real> row(static_cast<std::size_t>(g.ny), Real(0));
-    int top = j0;
-    for (int j = j0; j < g.ny; ++j) {
-      for (int i = 0; i < g.nx; ++i) row[static_cast<std::size_t>(j)] += at(i, j);
-      if (row[static_cast<std::size_t>(j)] > 0)
-        top = j;
-      else
-        break;
-    }
-    Real l = g.y(top) + g.hy / 2;
-    if (top - 1 > j0) {
-      const Real y1 = g.y(top - 1), y2 = g.y(top);
-      const Real f1 = row[static_cast<std::size_t>(top - 1)],
-                 f2 = row[static_cast<std::size_t>(top)];
-      if (f1 > f2) {
-        using std::sqrt;
-        const Real l2 = y2 * y2 + f2 * (y2 * y2 - y1 * y1) / (f1 - f2);
-        l = std::min(sqrt(l2), y2 + g.hy);
-      }
-    }
-    return {.a0 = (xl - xt) / 2, .b0 = (xl + xt) / 2, .l = l};
-  }
+  static Edges locate_edges(const BemGrid<Real>& g, const std::vector<Real>& p);
 
   /// The scene in the units of the solve (docs/bem.md, "Scaling"): lengths in the surface
   /// plane in 2^length, displacements (d, the gap, the profile) in 2^displacement, pressures in
@@ -477,66 +248,9 @@ class BemSolver {
     Real sizing = 1;
   };
 
-  Scaled scaled(const BemScene<Real>& scene) const {
-    scene.validate();
-    const Real c = material_.instantaneous_compliance(), f = material_.creep_ratio();
-    const std::string inputs = "c1 = " + detail::format_value(scene.c1) +
-                               ", c2 = " + detail::format_value(scene.c2) +
-                               ", load = " + detail::format_value(scene.load) +
-                               ", speed = " + detail::format_value(scene.speed) +
-                               ", compliance (1 - nu)/(2 pi mu_D) = " + detail::format_value(c) +
-                               ", f = " + detail::format_value(f);
-    // As the plane solver: a compliance outside the normal range (mu_D near the largest or
-    // smallest double overflows or underflows (1 - nu)/(2 pi mu_D) in the material) is an error.
-    detail::representable(
-        c, 0, "the instantaneous compliance c", [&] { return inputs; }, false);
-    detail::representable(
-        1 + f, 0, "1 + f", [&] { return inputs; }, false);
-    const Binary<Real> bc = binary(c), bf = binary(1 + f), bp = binary(scene.load),
-                       b1 = binary(scene.c1), b2 = binary(scene.c2);
-    const int compliance_e = bc.e + bf.e;
-    const int sum = bp.e + compliance_e - b1.e;
-    const int length = sum >= 0 ? (sum + 1) / 3 : -((-sum + 1) / 3);
-    // u = c K p (K a length) in units: c' = c 2^(length + pressure - displacement), which is
-    // c 2^(-compliance_e) with pressure = displacement - length - compliance_e; the load
-    // P = 2^(pressure + 2 length) P'; the gap C1 x^2/2 = 2^displacement (C1 2^(2 length -
-    // displacement)) x'^2/2.
-    const int displacement = 2 * length + b1.e;
-    const int pressure = displacement - length - compliance_e;
-    Scaled out{.scene = {.c1 = b1.m,
-                         .c2 = times_power_of_two(b2.m, b2.e - b1.e),
-                         .load = times_power_of_two(bp.m, bp.e - pressure - 2 * length),
-                         .speed = Real(1),
-                         .profile = {},
-                         .y_min = times_power_of_two(scene.y_min, -length),
-                         .y_max = times_power_of_two(scene.y_max, -length)},
-               .compliance = times_power_of_two(bc.m, -bf.e),
-               .terms = {},
-               .length = length,
-               .displacement = displacement,
-               .pressure = pressure,
-               .inputs = inputs};
-    if (scene.profile) {
-      const auto& h = scene.profile;
-      out.scene.profile = [h, length, displacement](Real x, Real y) {
-        return times_power_of_two(h(times_power_of_two(x, length), times_power_of_two(y, length)),
-                                  -displacement);
-      };
-    }
-    if (substrate_) {
-      out.thickness = times_power_of_two(substrate_->thickness, -length);
-      out.sizing = sizing_factor(out);
-    }
-    const Binary<Real> bv = binary(scene.speed);
-    for (const auto& t : bem::memory_terms_of(material_)) {
-      const Binary<Real> bt = binary(t.tau);
-      out.terms.push_back(
-          PronyTerm<Real>{t.f, scene.speed == 0 || t.tau == 0
-                                   ? Real(0)
-                                   : times_power_of_two(bv.m * bt.m, bv.e + bt.e - length)});
-    }
-    return out;
-  }
+  /// The scene in the units of the solve (Scaled); throws std::invalid_argument for an
+  /// invalid scene.
+  Scaled scaled(const BemScene<Real>& scene) const;
 
   /// The grid of `n` elements per semi-axis in the units of `u`: of the long-term Hertz ellipse,
   /// or across (x) of `across` when given (the refinement's, which sizes the cells by the contact
@@ -545,16 +259,7 @@ class BemSolver {
   /// covers: bem_scene() sized C2 for the half space, and a profile's contact is as long as its
   /// drop allows (a flat roller's, its flat length), not shorter by F^(1/3) as an ellipsoid's.
   BemGrid<Real> grid_in_units(const Scaled& u, const HertzContact<Real>& hertz, int n,
-                              Real across = 0) const {
-    const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
-    int my = m;
-    if (u.scene.profile && u.sizing < 1) {
-      const auto half_space = hertz_contact(
-          u.scene.c1, u.scene.c2, (1 + material_.creep_ratio()) * u.compliance, u.scene.load);
-      my = static_cast<int>(std::ceil(options_.extent * n * half_space.b / hertz.b - 1e-9));
-    }
-    return {2 * m + 1, 2 * my + 1, (across > 0 ? across : hertz.a) / Real(n), hertz.b / Real(n)};
-  }
+                              Real across = 0) const;
 
   /// Hertz's long-term contact (B8) in the units of `u`, on the compliance (1 + f) c times the
   /// substrate's sizing factor (B19).
@@ -565,69 +270,15 @@ class BemSolver {
 
   /// (B19): the factor F = T(kappa / min(a, b)) of the Hertz contact (a, b) on the compliance
   /// (1 + f) c F, kappa = 2, by bisection in ln F (T(kappa/a(F)) falls as F grows).
-  Real sizing_factor(const Scaled& u) const {
-    using std::exp;
-    using std::log;
-    const Real lt = (1 + material_.creep_ratio()) * u.compliance;
-    const auto g = [&](Real ln_f) {
-      const auto hz = hertz_contact(u.scene.c1, u.scene.c2, lt * exp(ln_f), u.scene.load);
-      const W t = substrate_->surface_factor(W(2) / W(std::min(hz.a, hz.b)), u.thickness);
-      return Real(log(t)) - ln_f;
-    };
-    Real lo = 0, hi = 0;
-    while (g(lo) < 0 && lo > -600) lo -= 8;
-    while (g(hi) > 0 && hi < 600) hi += 8;
-    for (int k = 0; k < 80 && hi - lo > Real(1e-6); ++k) {
-      const Real mid = (lo + hi) / 2;
-      (g(mid) < 0 ? hi : lo) = mid;
-    }
-    return exp((lo + hi) / 2);
-  }
+  Real sizing_factor(const Scaled& u) const;
 
   /// A start solution in the caller's units, in the units of `u` (or null).
-  static std::optional<Solution> start_in_units(const Solution* start, const Scaled& u) {
-    if (start == nullptr) return std::nullopt;
-    Solution s = *start;
-    s.grid.hx = times_power_of_two(s.grid.hx, -u.length);
-    s.grid.hy = times_power_of_two(s.grid.hy, -u.length);
-    for (auto& p : s.pressure) p = times_power_of_two(p, -u.pressure);
-    s.load = times_power_of_two(s.load, -u.pressure - 2 * u.length);
-    s.d = times_power_of_two(s.d, -u.displacement);
-    if (!(s.load > 0) || !(boost::math::isfinite)(s.load) || !(boost::math::isfinite)(s.d))
-      return std::nullopt;
-    return s;
-  }
+  static std::optional<Solution> start_in_units(const Solution* start, const Scaled& u);
 
   /// The solution of the units of `u` in the caller's units. A converged solution's d, a(0), l,
   /// peak pressure and load must be normal numbers there, else an error names them and the
   /// inputs.
-  static void to_caller_units(Solution& s, const Scaled& u) {
-    const int k = u.length, w = u.displacement, pe = u.pressure;
-    Real pmax = 0;
-    for (const Real p : s.pressure) pmax = std::max(pmax, p);
-    const auto inputs = [&] { return u.inputs; };
-    if (s.converged) {
-      detail::representable(s.d, w, "the penetration d", inputs, false);
-      detail::representable(s.a0, k, "a(0)", inputs, false);
-      detail::representable(s.l, k, "l", inputs, false);
-      detail::representable(pmax, pe, "the peak pressure", inputs, false);
-      detail::representable(s.load, 2 * k + pe, "the load", inputs, false);
-      detail::representable(s.chi, w - k, "chi", inputs);
-    }
-    for (auto& p : s.pressure) p = times_power_of_two(p, pe);
-    for (auto& g : s.gap) g = times_power_of_two(g, w);
-    s.grid.hx = times_power_of_two(s.grid.hx, k);
-    s.grid.hy = times_power_of_two(s.grid.hy, k);
-    s.d = times_power_of_two(s.d, w);
-    s.a0 = times_power_of_two(s.a0, k);
-    s.b0 = times_power_of_two(s.b0, k);
-    s.l = times_power_of_two(s.l, k);
-    // chi = C1 x_mean = (C1' 2^(w - 2k)) (x_mean' 2^k).
-    s.chi = times_power_of_two(s.chi, w - k);
-    s.load = times_power_of_two(s.load, 2 * k + pe);
-    s.long_term = {times_power_of_two(s.long_term.a, k), times_power_of_two(s.long_term.b, k),
-                   times_power_of_two(s.long_term.d, w), times_power_of_two(s.long_term.p0, pe)};
-  }
+  static void to_caller_units(Solution& s, const Scaled& u);
 
   /// One solve on the grid of `n` elements per semi-axis (across: of `across`, in the units of
   /// `u`, when given), in the caller's units.
@@ -650,144 +301,6 @@ auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
   const Scaled u = scaled(scene);
   if (options_.tolerance > 0) return refine(u, start);
   return solve_on(u, options_.grid, start);
-}
-
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
-auto BemSolver<Real, Material, Quadrature>::solve_on(const Scaled& u, int n, const Solution* start,
-                                                     Real across) const -> Solution {
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
-  const auto hertz = hertz_in_units(u, material_.creep_ratio());
-  const auto grid = grid_in_units(u, hertz, n, across);
-  if (u.scene.profile) validate_profile(u.scene, grid);
-  const auto terms = effective_terms(grid, u.scene.speed, u.terms);
-  const Real c = u.compliance;
-  const bem::InfluenceTable<Real, Quadrature> table(grid, c, terms, u.scene.speed, options_.threads,
-                                                    substrate_.get(), u.thickness);
-  const bem::ConvolutionOperator<Real> op(table);
-  const std::vector<Complex> symbol =
-      bem::preconditioner_symbol(grid, op, c, terms, u.scene.speed, substrate_.get(), u.thickness);
-  const double setup = std::chrono::duration<double>(clock::now() - t0).count();
-  const auto seed = start_in_units(start, u);
-  const bool local = substrate_ && substrate_->kind == SubstrateKind::local;
-  Solution sol = iterate(u.scene, grid, hertz, op, symbol, terms, c * u.sizing, u.length,
-                         seed ? &*seed : nullptr, local ? &table : nullptr);
-  to_caller_units(sol, u);
-  sol.elements = n;
-  sol.seconds_setup = setup;
-  sol.seconds_solve = std::chrono::duration<double>(clock::now() - t0).count() - setup;
-  return sol;
-}
-
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
-auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Solution* start) const
-    -> Solution {
-  using std::abs;
-  const Real tol = Real(options_.tolerance);
-  // chi's floor: 1e-6 C1 a_H, the long-term Hertz semi-axis in the caller's units.
-  const HertzContact<Real> hertz = hertz_in_units(u, material_.creep_ratio());
-  const Real chi_floor =
-      Real(1e-6) * times_power_of_two(u.scene.c1 * hertz.a, u.displacement - u.length);
-  double setup = 0, seconds = 0;
-  std::optional<Solution> coarse, last;
-  std::optional<BemErrorEstimate<Real>> before_change;  // the change between the two grids before
-  bool three_grids = false;                             // the last estimate had three grids
-  // The cells' semi-axis across: the long-term Hertz a_H, then the reach of the contact found on
-  // the grid before, |x| + 3 hx/2 of its farthest loaded cell (the edge lies within a cell of
-  // that cell's centre), when that is less (the faster, the narrower the contact: the glassy one
-  // is (1 + f)^(-1/3) a_H wide), so that hx at least halves. A contact that outgrows a grid sized
-  // so (it reaches the grid's border, as an end-loaded roller's edge peak can) is solved again on
-  // a grid twice as wide across, up to a_H.
-  Real across = hertz.a;
-  for (int n = options_.grid; n <= options_.max_grid; n *= 2) {
-    last = solve_on(u, n, start, across);
-    setup += last->seconds_setup;
-    seconds += last->seconds_solve;
-    while (!last->converged && last->code == StopCode::contact_reaches_grid_boundary &&
-           across < hertz.a) {
-      across = std::min(hertz.a, 2 * across);
-      last = solve_on(u, n, start, across);
-      setup += last->seconds_setup;
-      seconds += last->seconds_solve;
-    }
-    Solution& s = *last;
-    Real reach = 0;
-    for (int j = 0; j < s.grid.ny; ++j)
-      for (int i = 0; i < s.grid.nx; ++i)
-        if (s.p(i, j) > 0) reach = std::max(reach, abs(s.grid.x(i)) + 3 * s.grid.hx / 2);
-    if (reach > 0) across = std::min(across, times_power_of_two(reach, -u.length));
-    // A grid too coarse for the contact (fewer than 3 cells across) is refined; any other
-    // failure is returned as it is.
-    if (!s.converged) {
-      if (s.code == StopCode::under_resolved) continue;
-      break;
-    }
-    if (coarse) {
-      // (E1)-(E3): the change from the grid before, or half the change before that when it is
-      // larger (a change that is small by coincidence, two grids landing near each other), times
-      // Roache's safety factor 5/4; the edges, located to a quarter cell (B12, B13), also carry
-      // that. The tolerance is met only on the third converged grid or later.
-      const BemErrorEstimate<Real> change = {
-          .d = abs(s.d - coarse->d),
-          .chi = abs(s.chi - coarse->chi),
-          .a0 = abs(s.a0 - coarse->a0),
-          .b0 = abs(s.b0 - coarse->b0),
-          .l = abs(s.l - coarse->l),
-          .p_max = abs(s.peak_pressure() - coarse->peak_pressure())};
-      const auto bound = [&](Real now, Real before) {
-        return Real(5) / 4 * (before_change ? std::max(now, before / 2) : now);
-      };
-      const BemErrorEstimate<Real> b = before_change.value_or(change);
-      const Real qx = s.grid.hx / 4, qy = s.grid.hy / 4;
-      s.error = {.d = bound(change.d, b.d),
-                 .chi = bound(change.chi, b.chi),
-                 .a0 = bound(change.a0, b.a0) + qx,
-                 .b0 = bound(change.b0, b.b0) + qx,
-                 .l = bound(change.l, b.l) + qy,
-                 .p_max = bound(change.p_max, b.p_max)};
-      three_grids = before_change.has_value();
-      s.tolerance_met = three_grids && s.error.d <= tol * abs(s.d) &&
-                        s.error.chi <= tol * std::max(abs(s.chi), chi_floor);
-      if (s.tolerance_met) break;
-      before_change = change;
-    }
-    coarse = s;
-  }
-  Solution sol = std::move(*last);
-  sol.seconds_setup = setup;
-  sol.seconds_solve = seconds;
-  if (sol.converged && !sol.tolerance_met) {
-    // The tolerance as given, an estimate to two digits.
-    const auto percent = [](Real x, int digits = std::numeric_limits<Real>::digits10) {
-      std::ostringstream out;
-      out.precision(digits);
-      out << Real(100) * x << "%";
-      return out.str();
-    };
-    const std::string estimates = percent(sol.error.d / abs(sol.d), 2) + " in d, " +
-                                  percent(sol.error.chi / std::max(abs(sol.chi), chi_floor), 2) +
-                                  " in chi";
-    add_warning(
-        sol,
-        !(boost::math::isfinite)(sol.error.d) || !three_grids ? WarningCode::tolerance_not_verified
-                                                              : WarningCode::tolerance_not_met,
-        !(boost::math::isfinite)(sol.error.d)
-            ? "the tolerance " + percent(tol) + " is not verified: only the grid " +
-                  std::to_string(sol.elements) + " resolved the contact (max_grid " +
-                  std::to_string(options_.max_grid) + ")"
-        : !three_grids
-            ? "the tolerance " + percent(tol) +
-                  " is not verified: it needs three grids and only two resolved the contact "
-                  "up to the largest grid " +
-                  std::to_string(sol.elements) + " (max_grid; estimated errors " + estimates + ")"
-            : "the tolerance " + percent(tol) + " is not met at the largest grid " +
-                  std::to_string(sol.elements) + " (max_grid): estimated errors " + estimates);
-  }
-  return sol;
 }
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
@@ -817,6 +330,17 @@ auto BemSolver<Real, Material, Quadrature>::long_term_hertz(const BemScene<Real>
       detail::representable(h.d, u.displacement, "the long-term Hertz penetration", inputs, false),
       detail::representable(h.p0, u.pressure, "the long-term Hertz pressure", inputs, false)};
 }
+
+}  // namespace viscoroll
+
+// The long members of BemSolver, defined out of the class before the explicit instantiation
+// declarations below: the scene in the units of the solve, the contact of one grid and the
+// refinement's loop over grids.
+#include <viscoroll/bem/detail/bem_grid_loop.hpp>
+#include <viscoroll/bem/detail/bem_iteration.hpp>
+#include <viscoroll/bem/detail/bem_units.hpp>
+
+namespace viscoroll {
 
 /// The scalar deduced from the material: BemSolver solver(GeneralizedMaxwell<double>(...)).
 template <ConstitutiveModel Material>

@@ -80,6 +80,7 @@ template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
 requires NodalQuadratureRule<Quadrature, coefficient_real_t<Real>>
 class InfluenceTable {
  public:
+  /// The table of the grid's offsets for the memory terms at speed V (see the class comment).
   InfluenceTable(const BemGrid<Real>& grid, Real compliance,
                  const std::vector<PronyTerm<Real>>& terms, Real speed, int threads = 1,
                  const SubstrateKernel<coefficient_real_t<Real>>* substrate = nullptr,
@@ -131,7 +132,9 @@ class InfluenceTable {
     return k_[static_cast<std::size_t>(di + nx_ - 1) +
               static_cast<std::size_t>(2 * nx_ - 1) * static_cast<std::size_t>(j)];
   }
+  /// The grid's cells per row.
   int nx() const { return nx_; }
+  /// The grid's cells per column.
   int ny() const { return ny_; }
 
  private:
@@ -219,8 +222,10 @@ class InfluenceTable {
 template <RealScalar Real>
 class ConvolutionOperator {
  public:
+  /// A complex number of the scalar.
   using Complex = std::complex<Real>;
 
+  /// The kernel's padded spectrum from an InfluenceTable, transformed once.
   template <class Quadrature>
   explicit ConvolutionOperator(const InfluenceTable<Real, Quadrature>& table)
       : nx_(table.nx()),
@@ -230,6 +235,7 @@ class ConvolutionOperator {
         fft_(nfx_, nfy_, ny_),
         kernel_(kernel_spectrum(table, nfx_, nfy_)) {}
 
+  /// A copy shares the kernel's spectrum and has its own work arrays.
   ConvolutionOperator(const ConvolutionOperator& o)
       : nx_(o.nx_),
         ny_(o.ny_),
@@ -239,11 +245,17 @@ class ConvolutionOperator {
         kernel_(o.kernel_) {}
   ConvolutionOperator& operator=(const ConvolutionOperator&) = delete;
 
+  /// The grid's cells per row.
   int nx() const { return nx_; }
+  /// The grid's cells per column.
   int ny() const { return ny_; }
+  /// nfx, the padded transform's size along x.
   int fft_nx() const { return nfx_; }
+  /// nfy, the padded transform's size along y.
   int fft_ny() const { return nfy_; }
+  /// nfx/2 + 1, the half spectrum's size along x.
   int spectrum_nx() const { return nfx_ / 2 + 1; }
+  /// (nfx/2 + 1) nfy, the values of a half spectrum.
   std::size_t spectrum_size() const {
     return static_cast<std::size_t>(spectrum_nx()) * static_cast<std::size_t>(nfy_);
   }

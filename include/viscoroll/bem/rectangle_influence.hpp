@@ -278,6 +278,7 @@ template <RealScalar Real, class Quadrature = MemoryPanelRule<Real>>
 requires NodalQuadratureRule<Quadrature, Real>
 class MemoryRows {
  public:
+  /// The shared nodes and every length's weights for offsets i hx, |i| <= m; lengths > 0.
   MemoryRows(int m, Real hx, Real hy, std::vector<Real> lengths)
       : m_(m), hx_(hx), hy_(hy), lengths_(std::move(lengths)) {
     using std::exp;
@@ -307,6 +308,7 @@ class MemoryRows {
     grading_ = 8 * lmin;
   }
 
+  /// The rows M_L(X_i, y), i = -m .. m (index i + m), one per length in the order given.
   std::vector<std::vector<Real>> operator()(Real y) const {
     using std::abs;
     using std::ceil;

@@ -31,14 +31,6 @@
 namespace viscoroll {
 namespace bem {
 
-/// (B15) in units of the thickness h: d(rho) = h D(rho h) = int_0^inf (T(x/h) - 1) J0(x rho) dx,
-/// tabulated once per body on panels of half a thickness by Chebyshev series of 16 terms (D is
-/// analytic for |Im rho| < 1, so each panel's series converges as 7.9^-n), out to the reach
-/// rho_max beyond which d = (T(0) - 1)/rho to 4096 eps relative to 1/rho.
-///   - RadialCorrection(t, t0): t(x) = T(x/h) (x = q h), t0 = T(0);
-///   - operator()(rho): d(rho) for rho >= 0;
-///   - direct(rho): the Hankel quadrature itself (below);
-///   - reach(): rho_max; far_factor(): T(0) - 1.
 /// A function on [lo, lo + panels width] as Chebyshev series of 16 terms on equal panels: the
 /// tables of (B15) and (B17). `fill(f)` samples f at each panel's Chebyshev points of the first
 /// kind and forms the coefficients (the discrete cosine transform); `operator()(s)` sums a
@@ -46,8 +38,10 @@ namespace bem {
 template <RealScalar W>
 class ChebyshevPanels {
  public:
+  /// The Chebyshev terms per panel.
   static constexpr int terms = 16;
 
+  /// Tabulates f on [lo, lo + panels width] in panels of the given width.
   template <class F>
   void fill(W lo, W width, int panels, F&& f) {
     const W pi = boost::math::constants::pi<W>();
@@ -70,10 +64,14 @@ class ChebyshevPanels {
     }
   }
 
+  /// Whether nothing is tabulated yet.
   bool empty() const { return coefficients_.empty(); }
+  /// The table's lower end.
   W lo() const { return lo_; }
+  /// The table's upper end.
   W hi() const { return lo_ + width_ * W(coefficients_.size()); }
 
+  /// The tabulated function at s, lo() <= s <= hi().
   W operator()(W s) const {
     const auto p = std::min(static_cast<std::size_t>((s - lo_) / width_), coefficients_.size() - 1);
     const auto& c = coefficients_[p];
@@ -99,9 +97,18 @@ W j0(W x) {
   return boost::math::detail::bessel_j0(x);
 }
 
+/// (B15) in units of the thickness h: d(rho) = h D(rho h) = int_0^inf (T(x/h) - 1) J0(x rho) dx,
+/// tabulated once per body on panels of half a thickness by Chebyshev series of 16 terms (D is
+/// analytic for |Im rho| < 1, so each panel's series converges as 7.9^-n), out to the reach
+/// rho_max beyond which d = (T(0) - 1)/rho to 4096 eps relative to 1/rho.
+///   - RadialCorrection(t, t0): t(x) = T(x/h) (x = q h), t0 = T(0);
+///   - operator()(rho): d(rho) for rho >= 0;
+///   - direct(rho): the Hankel quadrature itself (below);
+///   - reach(): rho_max; far_factor(): T(0) - 1.
 template <RealScalar W>
 class RadialCorrection {
  public:
+  /// t(x) = T(x/h) (x = q h) and t0 = T(0).
   RadialCorrection(std::function<W(W)> t, W t0) : t_(std::move(t)), t0_(t0) {
     const W eps = std::numeric_limits<W>::epsilon();
     // x_max: T - 1 below eps/64 at two consecutive integers (the concept: |T - 1| decays at
@@ -154,7 +161,9 @@ class RadialCorrection {
     return s;
   }
 
+  /// rho_max, beyond which d = (T(0) - 1)/rho.
   W reach() const { return rho_max_; }
+  /// T(0) - 1.
   W far_factor() const { return t0_ - 1; }
 
  private:
@@ -200,10 +209,13 @@ class RadialCorrection {
 /// length l = T(q)/q.
 template <RealScalar W>
 struct SubstrateKernel {
+  /// What the substrate is.
   SubstrateKind kind = SubstrateKind::half_space;
+  /// h, the thickness (+inf for the half space).
   W thickness = std::numeric_limits<W>::infinity();
   std::function<W(W)> factor;  ///< T(x/h), x = q h
   W local_length = 0;          ///< l of T = q l (a local bed)
+  /// A body's radial correction (B15); null for the half space and a local bed.
   std::shared_ptr<const RadialCorrection<W>> radial;
 
   /// T at the wavenumber q in units where the thickness is h_units.
@@ -335,6 +347,7 @@ class BodyCorrection {
     return table_(s);
   }
 
+  /// k at the offsets i hx, from the half space's Love row hs beyond the reach.
   std::vector<W> elastic(const std::vector<W>& hs) const {
     std::vector<W> out(hs.size());
     for (int i = -m_; i <= m_; ++i) {
@@ -345,6 +358,7 @@ class BodyCorrection {
     return out;
   }
 
+  /// The memory integral (B3) of k for the memory length L > 0 (hs: the half space's row).
   std::vector<W> memory(W length, const std::vector<W>& hs) const {
     using std::exp;
     using std::log;

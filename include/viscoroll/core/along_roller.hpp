@@ -22,9 +22,11 @@ struct AlongRoller {
   std::vector<Real> a;      ///< half width of the contact, m
   std::vector<Real> b;      ///< offset of its centre ahead of the axis, m
   std::vector<Real> p_max;  ///< largest pressure across the contact, Pa
+  ///@{
   Real y_minus = 0, y_plus = 0;  ///< the contact's ends along y
-  Real f0_max = 0;               ///< the largest F0
-  Real f0_max_y = 0;             ///< where it is (the first station, if several)
+  ///@}
+  Real f0_max = 0;    ///< the largest F0
+  Real f0_max_y = 0;  ///< where it is (the first station, if several)
 
   /// F0 at the station nearest `at` (the first of two equally near); 0 without stations. With
   /// at = 0: the F0(0) that an edge peak f0_max is compared with.

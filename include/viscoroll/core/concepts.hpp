@@ -132,7 +132,7 @@ enum class SubstrateKind {
 ///
 /// Models: HalfSpace, Layer (bonded or frictionless on a rigid base), SpringBed
 /// (substrate/substrate.hpp); a user's own body is one class with these members
-/// (tests/substrate/user_substrate.test.cpp).
+/// (tests/seams/user_substrate.test.cpp).
 template <class S>
 concept Substrate = RealScalar<typename S::real_type> &&
     requires(const S& s, typename S::real_type q) {

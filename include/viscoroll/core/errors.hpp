@@ -10,6 +10,7 @@ namespace viscoroll {
 /// special function) cannot meet its accuracy; solvers report non-convergence in their Result.
 class ConvergenceError : public std::runtime_error {
  public:
+  /// The message `what`, prefixed with "viscoroll: ".
   explicit ConvergenceError(const std::string& what) : std::runtime_error("viscoroll: " + what) {}
 };
 

@@ -107,7 +107,9 @@ constexpr std::string_view to_string(WarningCode c) {
 
 /// One warning: its code and its words.
 struct Warning {
+  /// Which warning.
   WarningCode code;
+  /// The warning in words.
   std::string text;
 };
 

@@ -35,8 +35,11 @@ namespace viscoroll {
 /// (mu_1 < lambda_1 < mu_2 < ... < lambda_M), and the creep ratio F = sum f_k.
 template <RealScalar Real>
 struct SpectrumLengths {
+  /// lambda_k = V tau_k, ascending.
   std::vector<Real> retardation;
+  /// mu_i = V rho_i, ascending.
   std::vector<Real> relaxation;
+  /// F = sum f_k.
   Real creep_ratio{};
 };
 
@@ -47,8 +50,14 @@ struct SpectrumLengths {
 /// the first moment (S8)), and the weights A_i of the pressure's partial fractions (S9).
 template <RealScalar Real>
 struct SpectrumStrip {
+  /// u_i, w_i and the weights A_i, one per relaxation length.
+  ///@{
   std::vector<Real> u, w, weight;
+  ///@}
+  /// The offset b and G0 = Pi_h(0).
+  ///@{
   Real b{}, g0{};
+  ///@}
   /// Pi_g'(0) + e_2, e_2 = sum_{j<k} lambda_j lambda_k (a length squared): the constant that the
   /// memory adds to the line equation (34) of a spectrum, docs/theory.md (S13).
   Real pig1{};
@@ -64,8 +73,14 @@ struct SpectrumStrip {
 /// (S17)).
 template <RealScalar Real>
 struct SpectrumStripSlopes {
+  /// d/d right[k] of b, g0, pig1 and centroid (M values each).
+  ///@{
   std::vector<Real> b, g0, pig1, centroid;
+  ///@}
+  /// d/da of b, g0, pig1 and centroid at fixed right sides.
+  ///@{
   Real b_a{}, g0_a{}, pig1_a{}, centroid_a{};
+  ///@}
 };
 
 namespace detail {
@@ -312,9 +327,13 @@ class SpectrumStripPressure {
                           creep, compliance, strip.weight[i], strip.w[i]);
   }
 
+  /// a, the strip's half width (caller's units).
   Real half_width() const { return times_power_of_two(a_, units_.length); }
+  /// b, the offset of its centre ahead of the axis.
   Real offset() const { return times_power_of_two(b_, units_.length); }
+  /// b + a, the leading edge.
   Real leading_edge() const { return times_power_of_two(b_ + a_, units_.length); }
+  /// b - a, the trailing edge.
   Real trailing_edge() const { return times_power_of_two(b_ - a_, units_.length); }
 
   /// (S9): the contact pressure at x (caller's units); zero outside the strip.

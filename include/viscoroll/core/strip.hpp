@@ -46,7 +46,10 @@ Real strip_alpha(Real a, Real vtau, Real f) {
 /// The strip functions at one y: G of Eq. (36), F0 of Eq. (33), Q of Eq. (46).
 template <RealScalar Real>
 struct StripFunctions {
+  /// The half width a, the offset b, G (36), F0 (33) and Q (46), in that order.
+  ///@{
   Real a, b, g, f0, q;
+  ///@}
 };
 
 /// G, F0 and Q for half width a > 0, offset b, V tau > 0 and creep ratio f, curvature c1, given
@@ -211,9 +214,13 @@ class StripPressure {
         odd_(odd),
         even_(even) {}
 
+  /// a, the strip's half width (in the caller's unit of length).
   Real half_width() const { return length(a_); }
+  /// b, the offset of its centre ahead of the axis.
   Real offset() const { return length(b_); }
+  /// b + a, the leading edge.
   Real leading_edge() const { return length(b_ + a_); }
+  /// b - a, the trailing edge.
   Real trailing_edge() const { return length(b_ - a_); }
 
   /// Eq. (32): the pseudo-pressure p*(x); zero outside the strip.

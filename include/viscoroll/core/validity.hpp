@@ -44,13 +44,18 @@ constexpr WarningCode warning_code(ValidityCheck check) {
 /// infinite values mean "not given" and skip the checks that need them.
 template <RealScalar Real>
 struct ValidityInputs {
+  /// NaN: "not given".
   static constexpr Real none = std::numeric_limits<Real>::quiet_NaN();
   Real radius = none;  ///< the roller's radius across, 1/C1 (m)
   Real a0 = none;      ///< the contact's half width at y = 0 (m)
   Real l = none;       ///< the contact's half length (m): the line theory's slenderness
-  Real y_minus = none, y_plus = none;     ///< the contact's ends along the roller (m)
+  ///@{
+  Real y_minus = none, y_plus = none;  ///< the contact's ends along the roller (m)
+  ///@}
+  ///@{
   Real body_min = none, body_max = none;  ///< the roller body's ends along y (m)
-  bool line_theory = false;               ///< the result is the line method's: (V3) applies
+  ///@}
+  bool line_theory = false;  ///< the result is the line method's: (V3) applies
   /// The line method's active memory terms (LineSpectrumSolution::active_terms): two or more
   /// solve by its spectrum path, whose chi needs the longer contact of (V3s).
   int memory_terms = 1;
@@ -64,9 +69,12 @@ struct ValidityInputs {
 /// names them with the likely cause.
 template <RealScalar Real>
 struct ValidityBreach {
+  /// The assumption breached.
   ValidityCheck check;
   Real value;  ///< the checked ratio (a0/R, l/a0, V/c_s, or how far the contact passes the end)
+  /// The limit that the value passed (a ValidityLimits value).
   Real limit;
+  /// The breach in words, with the likely cause.
   std::string message;
 };
 

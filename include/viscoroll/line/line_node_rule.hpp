@@ -56,6 +56,7 @@ class LineNodeRule {
   /// The relative accuracy the node sets are built for (at least the scalar's epsilon).
   Real tolerance() const { return tolerance_; }
 
+  /// Fills nd with the node set at y for the shape s and leading edge x0 = a(y) + b(y).
   void point(const LineShape<Real>& s, Real y, Real x0, LineNodes<Real>& nd) const {
     nd.clear();
     const Real yc = y - s.centre;  // y itself for a symmetric contact (c = 0)

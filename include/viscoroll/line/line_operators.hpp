@@ -52,12 +52,26 @@ namespace viscoroll {
 ///     builder's storage for one side's nodes (LineNodeRule::point), not part of the set.
 template <RealScalar Real>
 struct LineNodes {
+  /// The nodes y' of both sides, their distances |y' - y| and their weights.
+  ///@{
   std::vector<Real> yp, dist, weight;
+  ///@}
+  /// The memory integral's nodes t and weights (without e^-t).
+  ///@{
   std::vector<Real> tn, tw;
+  ///@}
+  /// l - y and l + y, the distances to the ends.
+  ///@{
   Real d1 = 0, d2 = 0;
+  ///@}
+  /// The relative accuracy the nodes were built for (0: the scalar's epsilon).
   Real tolerance = 0;
+  /// The builder's storage for one side's nodes (not part of the set).
+  ///@{
   std::vector<Real> side_s, side_w;
+  ///@}
 
+  /// Empties the node lists, keeping their storage.
   void clear() {
     yp.clear();
     dist.clear();
@@ -66,6 +80,7 @@ struct LineNodes {
     tw.clear();
   }
 
+  /// Appends the nodes y' = y + sign s_j (sign = +1 or -1) with the weights w_j.
   void add_side(Real y, int sign, const std::vector<Real>& s, const std::vector<Real>& w) {
     for (std::size_t j = 0; j < s.size(); ++j) {
       const Real node = sign > 0 ? Real(y + s[j]) : Real(y - s[j]);
@@ -144,8 +159,12 @@ Real extended_dx(const LineNodes<Real>& nd, const std::vector<Real>& df, Real fy
 /// nodes fixed in t = y/l) at fixed dq and q.
 template <RealScalar Real>
 struct ExteriorSlopes {
+  /// The factor of each dq_j in the result.
   std::vector<Real> weight;
+  /// The factor of q and the derivatives in x0 and in ln l.
+  ///@{
   Real ends = 0, x0 = 0, l = 0;
+  ///@}
 };
 
 /// The right side of the leading-edge condition (L6) of docs/theory.md section 4,
@@ -268,6 +287,7 @@ struct LineOperatorOptions {
   /// complex singularity of F within (l - |y|) 2^-end_levels of an end (docs/line-operators.md).
   int end_levels = 16;
 
+  /// Throws std::invalid_argument unless 0 <= end_levels <= 1000.
   void validate() const {
     detail::require(end_levels >= 0 && end_levels <= 1000, "end_levels", end_levels,
                     "0 <= end_levels <= 1000");
@@ -293,6 +313,7 @@ template <RealScalar Real, class Quadrature>
 requires NodalQuadratureRule<Quadrature, Real>
 class LineOperators {
  public:
+  /// The scalar.
   using real_type = Real;
 
   /// half_length: l > 0, the half length of the contact.
@@ -302,7 +323,9 @@ class LineOperators {
     options_.validate();
   }
 
+  /// l, the contact's half length.
   Real half_length() const { return l_; }
+  /// The settings.
   const LineOperatorOptions& options() const { return options_; }
 
   /// The nodes at y on each side's panels [0, min(scale, d) 2^-levels], then doubling, and

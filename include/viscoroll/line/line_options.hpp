@@ -72,6 +72,7 @@ struct LineOptions {
     return options;
   }
 
+  /// Throws std::invalid_argument naming the first setting out of its range.
   void validate() const {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 #include <utility>
 #include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
@@ -27,15 +28,25 @@ namespace viscoroll {
 /// LineSolver::solve for a profile.
 template <RollerProfile Profile>
 struct LineProfileScene {
+  /// The profile's scalar.
   using Real = typename Profile::real_type;
+  /// The roller's profile.
   Profile roller;
+  /// P, the total load, > 0.
   Real load = detail::required_field<Real>();
+  /// V, the rolling speed, >= 0.
   Real speed = detail::required_field<Real>();
 
   /// Throws std::invalid_argument naming the parameter unless load > 0 and speed >= 0 (finite).
   void validate() const {
     detail::require_positive("load", load);
     detail::require_non_negative("speed", speed);
+  }
+  /// "c1 = ... (a roller profile), load = ..., speed = ...": the scene in an error's message.
+  std::string describe() const {
+    return "c1 = " + detail::format_value(roller.c1()) +
+           " (a roller profile), load = " + detail::format_value(load) +
+           ", speed = " + detail::format_value(speed);
   }
 };
 
@@ -45,14 +56,18 @@ struct LineProfileScene {
 template <RollerProfile Profile>
 class ProfileDrop {
  public:
+  /// The profile's scalar.
   using Real = typename Profile::real_type;
+  /// The profile, with the solver's units 2^length (lengths) and 2^curvature (curvatures).
   ProfileDrop(Profile profile, int length, int curvature)
       : profile_(std::move(profile)), length_(length), curvature_(curvature) {}
+  /// h_u(y) = h(2^length y) 2^-(curvature + 2 length).
   template <class Problem>
   Real drop(const Problem&, Real y) const {
     return times_power_of_two(profile_.drop(times_power_of_two(y, length_)),
                               -(curvature_ + 2 * length_));
   }
+  /// h_u'(y) = h'(2^length y) 2^-(curvature + length).
   template <class Problem>
   Real drop_slope(const Problem&, Real y) const {
     return times_power_of_two(profile_.drop_slope(times_power_of_two(y, length_)),

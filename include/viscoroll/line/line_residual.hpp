@@ -17,6 +17,9 @@
 // (24), I the extended operator (41). Every integral at a point is a sum over one node set
 // (LineNodeRule, docs/theory.md section 7) of the differences F(y') - F(y), taken by the
 // operators of line_operators.hpp: near_field_strip for (34), exterior_right for (L6).
+//
+// LineResidual::jacobian is defined in line/detail/line_residual_jacobian.hpp, included at the end
+// of this header.
 #pragma once
 
 #include <Eigen/Core>
@@ -40,7 +43,10 @@ namespace viscoroll {
 /// The scene's constants seen by the residual (V tau > 0, f > 0).
 template <RealScalar Real>
 struct LineProblem {
+  /// C1, C2, V tau and f of the scene.
+  ///@{
   Real c1, c2, vtau, f;
+  ///@}
   Real a_ref;        ///< long-term static half width at y = 0 (scale of a, b)
   Real l_ref;        ///< long-term static half length (scale of l)
   Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52)
@@ -64,6 +70,7 @@ concept LeadingEdgeCondition = requires(const LineProblem<Real>& p, const LineSh
 /// The leading-edge condition (L6) of docs/theory.md section 4: (42) with only the second of the
 /// paper's two small-argument steps, I[F1, x0] -> Lambda[F1] (exterior_right).
 struct ExteriorLeadingEdge {
+  /// The right side of (L6) at y: exterior_right(nd, dq, q, x0, V tau).
   template <class Quadrature, class Real>
   static Real right(const LineProblem<Real>& p, const LineShape<Real>&, Real, Real x0,
                     const LineNodes<Real>& nd, const std::vector<Real>& dq, Real q) {
@@ -86,10 +93,12 @@ concept RollerDrop = requires(const D& d, const Problem& p, Real y) {
 
 /// The paper's drop h = C2 y^2/2 (Eq. 27), C2 = the problem's c2.
 struct ParabolicDrop {
+  /// h(y) = C2 y^2 / 2.
   template <class Problem, class Real>
   Real drop(const Problem& p, Real y) const {
     return p.c2 * y * y / 2;
   }
+  /// h'(y) = C2 y.
   template <class Problem, class Real>
   Real drop_slope(const Problem& p, Real y) const {
     return p.c2 * y;
@@ -104,8 +113,11 @@ requires NodalQuadratureRule<Quadrature, Real> &&
     LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
 class LineResidual {
  public:
+  /// A column vector of unknowns or residuals.
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  /// A dense matrix (the Jacobian).
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+  /// The roller's drop policy.
   using drop_type = Drop;
 
   /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
@@ -150,11 +162,14 @@ class LineResidual {
       for (int i = 0; i < m; ++i) t_.push_back(-t_[i]);
   }
 
+  /// N, the number of coefficients of ln a.
   int terms() const { return n_; }
   /// Collocation points: (N + 1) times the oversampling (N + 1 for the square system), twice
   /// that for an asymmetric contact.
   int points() const { return (n_ + 1) * oversampling_ * (asymmetric_ ? 2 : 1); }
+  /// k, the oversampling of the collocation points.
   int oversampling() const { return oversampling_; }
+  /// Whether the contact has odd parts and a centre.
   bool asymmetric() const { return asymmetric_; }
   /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, ln(l / l_ref), d / (C1 a_ref^2); for an
   /// asymmetric contact then gamma_0..gamma_{N-1}, delta_0..delta_N (the odd parts,
@@ -162,9 +177,12 @@ class LineResidual {
   int unknowns() const { return 2 * n_ + 3 + (asymmetric_ ? 2 * n_ + 2 : 0); }
   /// Equations: (34) and the leading-edge condition at each point, then the load (47).
   int equations() const { return 2 * points() + 1; }
+  /// The collocation points t_i = (y - c)/l (+-t_i for an asymmetric contact).
   const std::vector<Real>& collocation() const { return t_; }
+  /// The scene's constants.
   const LineProblem<Real>& problem() const { return p_; }
 
+  /// The contact's shape a(y), b(y) and l of the unknowns x.
   LineShape<Real> shape(const Vector& x) const {
     using std::exp;
     LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}, basis_, scale_};
@@ -177,6 +195,7 @@ class LineResidual {
     }
     return s;
   }
+  /// The penetration d of the unknowns x.
   Real penetration(const Vector& x) const { return x[2 * n_ + 2] * p_.c1 * p_.a_ref * p_.a_ref; }
 
   /// The unknowns of a shape and penetration.
@@ -386,113 +405,11 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector&
   return true;
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x, Vector& r,
-                                                                 Matrix& jac) const
-    -> bool requires std::same_as<LeadingEdge, ExteriorLeadingEdge> {
-  using std::log;
-  const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
-  r.resize(equations());
-  jac.setZero(equations(), nu);
-  const LineShape<Real> s = shape(x);
-  const Real d = penetration(x), c1 = p_.c1, v = p_.vtau;
-  const Real scale34 = c1 * p_.a_ref * p_.a_ref;
-  Vector da_i(nu), db_i(nu), df0_i(nu), dq_i(nu), dright(nu), dlhs(nu), dnode(nu), dan(nu), dbn(nu);
-  // Storage reused from point to point.
-  LineNodes<Real> nd;
-  std::vector<Real> df0, dq;
-  std::vector<StripDerivatives> dn;
-  ExteriorSlopes<Real> slopes;
-  for (int i = 0; i < m; ++i) {
-    const Real t = t_[i], y = s.centre + t * s.l;
-    const auto dh = strip_derivatives(s.a(y), s.b(y));
-    const auto& here = dh.value;
-    const Real a = here.a, b = here.b, x0 = a + b;
-    if (!(a > 0) || !(x0 > 0)) return false;
-    shape_gradient(s, y, a, da_i, db_i);
-    df0_i = dh.f0_a * da_i + dh.f0_b * db_i;
-    dq_i = dh.q_a * da_i + dh.q_b * db_i;
-    rule_.point(s, y, x0, nd);
-    const std::size_t count = nd.yp.size();
-    df0.resize(count);
-    dq.resize(count);
-    dlhs.setZero();
-    dright.setZero();
-    dn.resize(count);
-    for (std::size_t j = 0; j < count; ++j) {
-      dn[j] = strip_derivatives(s.a(nd.yp[j]), s.b(nd.yp[j]));
-      df0[j] = dn[j].value.f0 - here.f0;
-      dq[j] = dn[j].value.q - here.q;
-    }
-    const Real right = exterior_right(nd, dq, here.q, x0, v, &slopes);
-    Real r34 = 0, rle = 0;
-    const auto edge = point_rows(d, y, here, nd, df0, right, r34, rle);
-    r[i] = r34 + v / p_.a_ref * rle;
-    r[m + i] = rle;
-    // Node values: d F(y'_j) at fixed t'_j; the differences' second terms via the weight sums.
-    Real w0sum = 0, wqsum = 0;
-    for (std::size_t j = 0; j < count; ++j) {
-      const Real w0 = finite_part_weight(nd, j);
-      w0sum += w0;
-      wqsum += slopes.weight[j];
-      const auto& dj = dn[j];
-      if (!(dj.value.a > 0)) continue;  // at an end: F0 = Q = 0 there for every coefficient
-      shape_gradient(s, nd.yp[j], dj.value.a, dan, dbn);
-      dnode = dj.f0_a * dan + dj.f0_b * dbn;
-      dlhs += w0 * dnode;
-      dnode = dj.q_a * dan + dj.q_b * dbn;
-      dright += slopes.weight[j] * dnode;
-    }
-    dlhs -= w0sum * df0_i;
-    dright += (slopes.ends - wqsum) * dq_i;
-    // The kernels' dependence on x0 and on l (nodes fixed in t).
-    dright += slopes.x0 * (da_i + db_i);
-    dright[lam] += slopes.l;
-    // (34): lhs = FP + F0 ln[16 (l^2 - y^2)/a^2],
-    //       rhs = -C1 a^2/4 - C1 b (b - 2V)/2 - h(y) + d, dh/d ln l = h'(y) y at fixed t.
-    const Real lnfac = log(4 * nd.d1 / a) + log(4 * nd.d2 / a);
-    dlhs += lnfac * df0_i - (2 * here.f0 / a) * da_i;
-    dlhs[lam] += 2 * here.f0;
-    Vector drhs = -(c1 * a / 2) * da_i - c1 * (b - v) * db_i;
-    const Real slope_h = drop_.drop_slope(p_, y);
-    drhs[lam] -= slope_h * (y - s.centre);  // y - c = l t: y for a symmetric contact
-    if (asymmetric_) drhs[centre_index()] -= slope_h * p_.l_ref;
-    drhs[del] += scale34;
-    const Vector dr34 = (dlhs - drhs) / scale34;
-    // Leading edge: rle = (bessel - right) / (slope a_ref).
-    const Real z = a / v, e0 = edge.k0, e1 = edge.k1, slope = edge.slope, ri = dh.ri;
-    const Real e0z = e0 - e1, e1z = e1 - e0 - e1 / z;
-    const Real bessel_a = c1 * (b * e1 + a * b * e1z / v - dh.g_a * e0 - here.g * e0z / v);
-    const Real bessel_b = c1 * (a * e1 - dh.g_b * e0);
-    const Real slope_a =
-        c1 * (e1 + ri * e0) + c1 * a * (e1z / v + dh.ri_x * (1 + p_.f) / v * e0 + ri * e0z / v);
-    const Vector dbessel = bessel_a * da_i + bessel_b * db_i;
-    const Vector drle = (dbessel - dright) / (slope * p_.a_ref) - (rle * slope_a / slope) * da_i;
-    jac.row(i) = (dr34 + (v / p_.a_ref) * drle).transpose();
-    jac.row(m + i) = drle.transpose();
-  }
-  // Load (47) on load()'s nodes, fixed in t: d/d ln l of the integral is the integral itself.
-  std::vector<Real> nodes, weights;
-  rule_.load(s, asymmetric_, nodes, weights);
-  Real sum = 0;
-  Vector dsum = Vector::Zero(nu);
-  for (std::size_t j = 0; j < nodes.size(); ++j) {
-    const auto dj = strip_derivatives(s.a(nodes[j]), s.b(nodes[j]));
-    const auto& sf = dj.value;
-    sum += weights[j] * sf.f0;
-    if (!(sf.a > 0)) continue;
-    shape_gradient(s, nodes[j], sf.a, dan, dbn);
-    dsum += weights[j] * (dj.f0_a * dan + dj.f0_b * dbn);
-  }
-  r[2 * m] = sum / p_.load_target - 1;
-  jac.row(2 * m) = (dsum / p_.load_target).transpose();
-  jac(2 * m, lam) = sum / p_.load_target;
-  for (int i = 0; i < r.size(); ++i)
-    if (!(boost::math::isfinite)(r[i])) return false;
-  return jac.allFinite();
-}
+}  // namespace viscoroll
+
+#include <viscoroll/line/detail/line_residual_jacobian.hpp>
+
+namespace viscoroll {
 
 // Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
 // viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double

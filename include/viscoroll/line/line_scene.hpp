@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -22,9 +23,13 @@ Real max_line_contact_curvature_ratio() {
 /// axis) under total load `load`, rolling towards +x at `speed`.
 template <RealScalar Real>
 struct LineScene {
+  /// C1, the curvature across the roller (1/R), > 0.
   Real c1 = detail::required_field<Real>();
+  /// C2, the curvature along its axis: 0 < C2 < 8 e^-3 C1.
   Real c2 = detail::required_field<Real>();
+  /// P, the total load, > 0.
   Real load = detail::required_field<Real>();
+  /// V, the rolling speed, >= 0 (0: the static contact).
   Real speed = detail::required_field<Real>();
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, 0 < c2 < 8 e^-3 c1 (the
@@ -36,6 +41,11 @@ struct LineScene {
     detail::require_non_negative("speed", speed);
     detail::require(c2 < max_line_contact_curvature_ratio<Real>() * c1, "c2", c2,
                     "0 < c2 < 8 e^-3 c1 = 0.398 c1 (a contact longer in y than in x)");
+  }
+  /// "c1 = ..., c2 = ..., load = ..., speed = ...": the scene in an error's message.
+  std::string describe() const {
+    return "c1 = " + detail::format_value(c1) + ", c2 = " + detail::format_value(c2) +
+           ", load = " + detail::format_value(load) + ", speed = " + detail::format_value(speed);
   }
 };
 

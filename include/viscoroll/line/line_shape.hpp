@@ -31,12 +31,17 @@ struct LineShape {
   Real l;                   ///< half length
   std::vector<Real> alpha;  ///< Chebyshev coefficients of ln(a / (a_ref sqrt(1 - t^2)))
   std::vector<Real> beta;   ///< Chebyshev coefficients of b / a_ref
+  /// The expansion variable of the series alpha and beta.
   LineBasis basis = LineBasis::t_squared;
   Real scale = 0;  ///< e of LineBasis::s_mapped (unused by the other variables)
   /// The asymmetric contact's parts (empty and 0 for a symmetric one): the coefficients of the
   /// odd parts t sum gamma_k T_k(u) of ln(a/(a_ref sqrt(1 - t^2))) and t sum delta_k T_k(u) of
   /// b/a_ref, and the centre c of the contact [c - l, c + l].
+  /// The odd parts' coefficients gamma_k (of ln a) and delta_k (of b/a_ref).
+  ///@{
   std::vector<Real> alpha_odd{}, beta_odd{};
+  ///@}
+  /// c, the contact's centre along y.
   Real centre = 0;
 
   /// Whether the shape has an odd part or a centre (an asymmetric contact's representation).

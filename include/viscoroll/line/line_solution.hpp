@@ -39,13 +39,20 @@ struct LineSolution {
   std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
   std::vector<WarningCode> warning_codes;  ///< the warnings' codes, index for index
 
+  /// C1, V tau, f and the instantaneous compliance (1 - nu)/(2 pi mu_D): what strip() needs.
+  ///@{
   Real c1, vtau, f, compliance;
+  ///@}
 
+  /// The contact's half length l.
   Real l() const { return shape.l; }
   /// The contact's ends c - l and c + l (-l and l for a symmetric contact).
   Real y_minus() const { return shape.centre - shape.l; }
+  /// c + l.
   Real y_plus() const { return shape.centre + shape.l; }
+  /// The half width a(y) of the contact.
   Real a(Real y) const { return shape.a(y); }
+  /// b(y), the offset of the contact's centre ahead of the roller's axis.
   Real b(Real y) const { return shape.b(y); }
   /// G(y) of Eq. (36); 0 for a static or elastic scene.
   Real g(Real y) const { return functions(y).g; }
@@ -94,6 +101,7 @@ struct LineSolution {
     return out;
   }
 
+  /// a, b, G, F0 and Q at y (StripFunctions).
   StripFunctions<Real> functions(Real y) const {
     const Real a = shape.a(y), b = shape.b(y);
     if (!(vtau > 0) || !(f > 0) || !(a > 0)) return {a, b, Real(0), c1 * a * a / 4, Real(0)};

@@ -15,7 +15,10 @@
 //
 // The scene and the settings are line_scene.hpp and line_options.hpp; the iteration's steps that
 // the one-term and the spectrum path share, the solver's units and the rolling friction are in
-// line/detail/ (line_iteration.hpp, line_units.hpp, rolling_friction.hpp).
+// line/detail/ (line_iteration.hpp, line_units.hpp, rolling_friction.hpp). The long member
+// functions of LineSolver are defined out of the class in line/detail/line_solver_rolling.hpp (the
+// paper's ellipsoid and the one-term iteration), line_solver_profile.hpp (the roller profiles) and
+// line_solver_spectrum.hpp (a spectrum), included at the end of this header.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +38,7 @@
 #include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/required_field.hpp>
+#include <viscoroll/core/solve_inputs.hpp>
 #include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
@@ -69,17 +73,23 @@ template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussL
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 class LineSolver {
  public:
+  /// LineSolution for a SingleTimeModel, LineSpectrumSolution for a spectrum.
   using Solution = std::conditional_t<SingleTimeModel<Material>, LineSolution<Real, Quadrature>,
                                       LineSpectrumSolution<Real, Quadrature>>;
+  /// A column vector of unknowns or residuals.
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  /// A dense matrix (a Jacobian).
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 
+  /// Throws std::invalid_argument if the options are invalid (LineOptions::validate).
   explicit LineSolver(Material material, LineOptions options = {})
       : material_(std::move(material)), options_(options) {
     options_.validate();
   }
 
+  /// The material.
   const Material& material() const { return material_; }
+  /// The settings.
   const LineOptions& options() const { return options_; }
 
   /// Solves the scene; `start` (a solution of a nearby scene, same material) seeds the iteration.
@@ -205,49 +215,11 @@ class LineSolver {
   }
   /// The solve of a profile whose long-term static contact did not converge: not converged, its
   /// reason, in the caller's units.
-  static Solution profile_static_failure(const StaticProfileContact<Real>& slow_c, Real c, Real f) {
-    Solution sol{};
-    sol.shape = LineShape<Real>{slow_c.a_ref, slow_c.half_length(), {Real(0)}, {Real(0)}};
-    sol.d = slow_c.d;
-    sol.a_long_term = slow_c.a_ref;
-    sol.l_long_term = slow_c.half_length();
-    sol.d_long_term = slow_c.d;
-    sol.chi = Real(0);
-    sol.converged = false;
-    sol.root = false;
-    sol.iterations = 0;
-    sol.residual = std::numeric_limits<Real>::quiet_NaN();
-    sol.c1 = slow_c.c1;
-    if constexpr (SingleTimeModel<Material>) {
-      sol.vtau = Real(0);
-      sol.f = f;
-      sol.compliance = c;
-    }
-    sol.code = slow_c.code == StopCode::contact_reaches_body_end ? slow_c.code
-                                                                 : StopCode::static_contact_failed;
-    sol.reason = "the long-term static contact of the profile: " + slow_c.reason +
-                 " (the line theory needs a slender contact, its collocation points a half "
-                 "width apart, docs/theory.md (G5); a short contact is the BEM's)";
-    copy_warnings(sol, slow_c);
-    return sol;
-  }
+  static Solution profile_static_failure(const StaticProfileContact<Real>& slow_c, Real c, Real f);
   /// A contact that reaches the roller's body end is outside the line theory (a sharp end's
   /// pressure peak): reported, not returned as a plausible number. l in the units u.
   template <class Profile>
-  static void check_body_end(Solution& sol, const Profile& roller, const Units& u) {
-    const Real l_caller = times_power_of_two(sol.shape.l, u.length);
-    const Real c_caller = times_power_of_two(sol.shape.centre, u.length);
-    const Real y_plus = c_caller + l_caller, y_minus = c_caller - l_caller;
-    if (sol.converged && !(y_plus < roller.y_max() && y_minus > roller.y_min())) {
-      sol.converged = false;
-      sol.root = false;
-      sol.code = StopCode::contact_reaches_body_end;
-      sol.reason = "the contact reaches the roller's body end (it spans y = " +
-                   detail::format_value(y_minus) + " ... " + detail::format_value(y_plus) +
-                   ", the body ends at y = " + detail::format_value(roller.y_min()) + " and " +
-                   detail::format_value(roller.y_max()) + "): outside the line theory";
-    }
-  }
+  static void check_body_end(Solution& sol, const Profile& roller, const Units& u);
 
   /// max |r| of the scaled equations below which the iterate is a root (`LineSolution::root`):
   /// 64 sqrt(eps), the minimisers' stop at a root and the solution's flag.
@@ -302,36 +274,7 @@ class LineSolver {
   Solution rolling_from(const LineScene<Real>& scene, const Units& u,
                         const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
                         const Solution* given, const Drop& drop = {}, const ColdStart& cold = {},
-                        bool asymmetric = false) const {
-    if (given == nullptr) return rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
-    // The seed in the solver's units (a shape from a far scene may leave the range there).
-    Solution seed = *given;
-    seed.shape = u.shape_in_units(std::move(seed.shape));
-    seed.d = u.penetration_in_units(seed.d);
-    const Solution* start = &seed;
-    if (!usable_seed(*start)) {
-      Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
-      add_warning(
-          again, WarningCode::seed_set_aside,
-          "the seed was set aside (not a converged solution with finite a(y), b(y), l and d): "
-          "solved from the cold start");
-      return again;
-    }
-    Solution seeded = rolling(scene, u, slow, prob, c, start, drop, cold, asymmetric);
-    if (seeded.converged) return seeded;
-    Solution again = rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
-    // No root from the seed (its last stage stopped above the root tolerance with a finite
-    // residual): the cold start's answer, a root or the certified minimum, without a warning,
-    // since the seed had no say in it. Any other stop (outside the domain, a root that is not a
-    // contact) is said.
-    const bool no_root =
-        (boost::math::isfinite)(seeded.residual) && seeded.residual > root_tolerance();
-    if (!no_root)
-      add_warning(again, WarningCode::seed_set_aside,
-                  "the iteration from the seed stopped (" + seeded.reason +
-                      "): solved again from the cold start");
-    return again;
-  }
+                        bool asymmetric = false) const;
 
   /// A converged solution whose shape and penetration are finite.
   static bool usable_seed(const Solution& s) {
@@ -351,191 +294,74 @@ class LineSolver {
   /// else an equivalent scene of order-one numbers with the same f and V tau/a0 (the plane
   /// solution depends on nothing else, docs/theory.md "Scaling").
   PlaneSeed plane_seed(const LineScene<Real>& scene, const Units& u,
-                       const StaticLineContact<Real>& slow, Real c, Real f, Real vtau) const {
-    using std::abs;
-    using limits = std::numeric_limits<Real>;
-    // W = C1 a0^2 / (4 (1 + f) c), plane a0 = slow.a0, formed as its power-of-two scaled self.
-    const Binary<Real> cc = binary(c);
-    const Real w_plane = times_power_of_two(u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m),
-                                            u.curvature + 2 * u.length - cc.e);
-    const Real a0 = times_power_of_two(slow.a0, u.length);
-    if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() &&
-        (boost::math::isfinite)(a0) && a0 >= (limits::min)()) {
-      try {
-        const PlaneSolver<Real, Material> plane(material_);
-        const auto ps =
-            plane.solve(PlaneScene<Real>{.c1 = scene.c1, .load = w_plane, .speed = scene.speed});
-        return {ps.a / a0, ps.b / a0};
-      } catch (const std::invalid_argument&) {
-        // a number of the plane solution not representable: the scene of order-one numbers
-      }
-    }
-    const Real pi = boost::math::constants::pi<Real>();
-    // c = (1 - 0)/(2 pi mu_D) = 1, tau = 1, C1 = 1, 4 c (1 + f) W / C1 = 1: a0 = 1, V tau = v.
-    const PlaneSolver<Real, StandardLinearSolid<Real>> plane(
-        StandardLinearSolid<Real>(1 / (2 * pi), Real(0), f, Real(1)));
-    const auto ps = plane.solve(
-        PlaneScene<Real>{.c1 = Real(1), .load = 1 / (4 * (1 + f)), .speed = vtau / slow.a0});
-    return {ps.a / ps.a_long_term, ps.b / ps.a_long_term};
-  }
+                       const StaticLineContact<Real>& slow, Real c, Real f, Real vtau) const;
 
+  /// The continuation in N of the one-term iteration from `start` (a seed in the solver's units)
+  /// or, for nullptr, from the cold start `cold`; rolling_from's step.
   template <class Drop, class ColdStart>
   Solution rolling(const LineScene<Real>& scene, const Units& u,
                    const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
                    const Solution* start, const Drop& drop, const ColdStart& cold,
-                   bool asymmetric = false) const {
-    using Residual = LineResidual<Real, Quadrature, ExteriorLeadingEdge, Drop>;
-    const Real f = prob.f, vtau = prob.vtau;
-    LineShape<Real> shape;
-    Real d;
-    // Continuation in N from two terms up: each stage starts from the previous solution, which
-    // keeps the iteration on the branch of smooth solutions (a start far from it at large N can
-    // land on another root of the discrete equations, docs/line-solver.md). The first stage
-    // starts from the seed re-expanded to its terms, so that a seed decides no more than where
-    // the two-term iteration begins: the answer is the cold start's to the iteration's tolerance,
-    // except in the slow regime where the two-term equations have several roots or stop short of
-    // one from one start only (docs/line-solver.md, "Continuation in speed").
-    const std::vector<int> stages = detail::continuation_stages(options_.terms);
-    if (start != nullptr && start->shape.alpha.size() > 0) {
-      // A solution of a nearby scene.
-      shape = start->shape;
-      d = start->d;
-    } else {
-      // The static contact shrunk and shifted as the plane solution at the same V tau/a0.
-      std::tie(shape, d) = cold(slow, plane_seed(scene, u, slow, c, f, vtau));
-    }
-    // The paper's least-squares solution where the equations have no root (the last stage, with
-    // the semi-analytic Jacobian of (L6)); if Newton's method on |r|^2 finds a root after all,
-    // Levenberg-Marquardt certifies it. Only from the cold start: from a seed the iteration stops
-    // short instead, and rolling_from runs the cold start, so that a minimum is never the seed's
-    // (a seed near a fold of its own branch leads to a minimum of |r| where the cold start has a
-    // root, docs/line-solver.md, "Continuation in speed").
-    const bool least_squares = minimises();
-    const bool minimise = least_squares && start == nullptr;
-    const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
-    int iterations = 0;
-    for (std::size_t k = 0; k < stages.size(); ++k) {
-      const Residual res(prob, stages[k], options_.basis, options_.oversampling,
-                         Real(options_.quadrature_tolerance), drop, asymmetric);
-      Vector x = res.pack(shape, d);
-      Vector r(res.equations());
-      if (!res(x, r)) {
-        // The cold start's plane seed outside the domain: the static contact (a seed given by
-        // the caller is not replaced here: rolling_from runs the cold start and says so).
-        if (k == 0 && start == nullptr) {
-          const auto [s0, d0] = cold(slow, PlaneSeed{Real(1), Real(0)});
-          x = res.pack(s0, d0);
-        }
-        if (!res(x, r))
-          return failure(u, slow, c, f, vtau, res, x, StopCode::outside_domain,
-                         "initial guess outside the domain", iterations);
-      }
-      const bool last = k + 1 == stages.size();
-      Matrix jac;  // Levenberg-Marquardt's Jacobian at its last iterate
-      numerics::LeastSquaresOutcome out =
-          numerics::levenberg_marquardt(res, x, r, stage_settings(settings, k, last), jac);
-      iterations += out.iterations;
-      // Whether jac is the Jacobian at the returned root (not so once the minimisation ran).
-      bool jac_at_root = out.converged;
-      if (last && minimise && !out.converged && !out.undefined) {
-        out = detail::least_squares_solution(res, x, r, settings, iterations);
-        jac_at_root = false;
-      }
-      if (out.undefined)
-        return failure(u, slow, c, f, vtau, res, x, StopCode::outside_domain, "Jacobian undefined",
-                       iterations);
-      shape = res.shape(x);
-      d = res.penetration(x);
-      // An intermediate stage that stops short still seeds the next one; only the last decides.
-      if (last) {
-        // The a posteriori error estimate of a root, the Newton correction max |J^+ r|. In a
-        // scalar narrower than double a root is reported converged only where it is at most
-        // sqrt(eps) (in float at V tau = 0.01 a0, N = 6, the residual's rounding floor 2e-5 over
-        // the smallest singular value 2e-3 of J moved b(0) by 15%; docs/stability.md). In double
-        // and wider it exceeds sqrt(eps) only at folds of the discrete equations (a residual
-        // 2e-8 ... 9e-7 over a vanishing singular value), where the root is reported with a
-        // warning naming the estimate (docs/line-solver.md, "Stops short of a root").
-        Real estimate = 0;
-        using std::sqrt;
-        const Real sqrt_eps = sqrt(std::numeric_limits<Real>::epsilon());
-        // At a root that Levenberg-Marquardt certified its own Jacobian serves: within
-        // O(eps^0.6) of J(x) (its last step), which moves the estimate by a relative
-        // O(eps^0.6 / sigma_min); what the estimate decides is its side of sqrt(eps), against
-        // 1e-15 ... 1e-11 at ordinary roots and far beyond it at folds (docs/line-solver.md).
-        if (out.converged && least_squares && r.cwiseAbs().maxCoeff() <= root_tolerance())
-          estimate = jac_at_root ? detail::newton_correction<Real>(jac, r)
-                                 : detail::newton_correction<Real>(res, x);
-        const bool narrow = std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits;
-        if (narrow && !(estimate <= sqrt_eps)) {
-          out.converged = false;
-          out.code = StopCode::precision_exhausted;
-          out.reason = "error estimate max |J^+ r| = " + std::to_string(double(estimate)) +
-                       " of the unknowns exceeds sqrt(eps) = " + std::to_string(double(sqrt_eps)) +
-                       ": the residual's rounding floor is beyond what this scalar carries here "
-                       "(use double)";
-        }
-        Solution sol =
-            make(u, slow, c, f, vtau, res, x, r, out.converged, out.code, out.reason, iterations);
-        // A root of the discrete equations that is not a contact (d, a(0) or l not positive;
-        // found at folds, e.g. by the property test of errors.md) is reported, not returned as
-        // converged.
-        const Real a_centre = sol.a(sol.shape.centre);
-        if (sol.converged && !(sol.d > 0 && a_centre > 0 && sol.l() > 0)) {
-          sol.converged = false;
-          sol.code = StopCode::not_a_contact;
-          sol.reason = "a root of the line equations that is not a contact (d = " +
-                       detail::format_value(sol.d) +
-                       ", a at the centre = " + detail::format_value(a_centre) +
-                       ", l = " + detail::format_value(sol.l()) +
-                       " in the solver's units of length; each must be positive)";
-        }
-        if (!narrow && !(estimate <= sqrt_eps))
-          add_warning(sol, WarningCode::near_fold,
-                      "a root where the Jacobian is nearly singular (a fold of the discrete "
-                      "equations): its error estimate max |J^+ r| = " +
-                          std::to_string(double(estimate)) +
-                          " exceeds sqrt(eps), so the root is not determined to better than the "
-                          "discretisation and another root may lie near (docs/line-solver.md, "
-                          "\"Stops short "
-                          "of a root\")");
-        return sol;
-      }
-    }
-    const Residual res(prob, options_.terms, options_.basis, options_.oversampling,
-                       Real(options_.quadrature_tolerance), drop, asymmetric);
-    return failure(u, slow, c, f, vtau, res, Vector::Zero(res.unknowns()), StopCode::not_run,
-                   "no stage ran", iterations);
+                   bool asymmetric = false) const;
+
+  /// Whether a root's a posteriori error estimate, the Newton correction max |J^+ r| of the
+  /// unknowns, exceeds sqrt(eps): at folds of the discrete equations (a residual 2e-8 ... 9e-7
+  /// over a vanishing singular value), or where the residual's rounding floor over the smallest
+  /// singular value of J is beyond the scalar (docs/line-solver.md, "Stops short of a root").
+  static bool beyond_estimate(Real estimate) {
+    using std::sqrt;
+    return !(estimate <= sqrt(std::numeric_limits<Real>::epsilon()));
+  }
+  /// In a scalar narrower than double a root is reported converged only where its estimate is at
+  /// most sqrt(eps) (in float at V tau = 0.01 a0, N = 6, the residual's rounding floor 2e-5 over
+  /// the smallest singular value 2e-3 of J moved b(0) by 15%; docs/stability.md). Both paths.
+  static void guard_narrow_scalar(numerics::LeastSquaresOutcome& out, Real estimate) {
+    if (!(std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits)) return;
+    if (!beyond_estimate(estimate)) return;
+    using std::sqrt;
+    out.converged = false;
+    out.code = StopCode::precision_exhausted;
+    out.reason = "error estimate max |J^+ r| = " + std::to_string(double(estimate)) +
+                 " of the unknowns exceeds sqrt(eps) = " +
+                 std::to_string(double(sqrt(std::numeric_limits<Real>::epsilon()))) +
+                 ": the residual's rounding floor is beyond what this scalar carries here "
+                 "(use double)";
+  }
+  /// In double and wider, a root whose estimate exceeds sqrt(eps) (a fold of the discrete
+  /// equations) is reported with a warning naming the estimate. Both paths.
+  template <class AnySolution>
+  static void warn_near_fold(AnySolution& sol, Real estimate) {
+    if (std::numeric_limits<Real>::digits < std::numeric_limits<double>::digits) return;
+    if (!beyond_estimate(estimate)) return;
+    add_warning(sol, WarningCode::near_fold,
+                "a root where the Jacobian is nearly singular (a fold of the discrete "
+                "equations): its error estimate max |J^+ r| = " +
+                    std::to_string(double(estimate)) +
+                    " exceeds sqrt(eps), so the root is not determined to better than the "
+                    "discretisation and another root may lie near (docs/line-solver.md, \"Stops "
+                    "short of a root\")");
+  }
+  /// A root of the discrete equations that is not a contact (d, a at the centre or l not
+  /// positive; found at folds, e.g. by the property test of errors.md) is reported, not returned
+  /// as converged. Both paths; the values are in the solver's units.
+  template <class AnySolution>
+  static void require_contact(AnySolution& sol) {
+    const Real a_centre = sol.shape.a(sol.shape.centre);
+    if (!sol.converged || (sol.d > 0 && a_centre > 0 && sol.shape.l > 0)) return;
+    set_stop(
+        sol, StopCode::not_a_contact,
+        "a root of the line equations that is not a contact (d = " + detail::format_value(sol.d) +
+            ", a at the centre = " + detail::format_value(a_centre) +
+            ", l = " + detail::format_value(sol.shape.l) +
+            " in the solver's units of length; each must be positive)");
   }
 
+  /// The solution of the iterate x with residual r, in the solver's units: its rolling friction,
+  /// the warnings of the line theory's domain and bounds, and whether it is a root.
   template <class Residual>
   Solution make(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
                 const Residual& res, const Vector& x, const Vector& r, bool converged,
-                StopCode code, std::string reason, int iterations) const {
-    const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
-    const bool root = converged && rmax <= root_tolerance();
-    Solution sol = solution(u, slow, c, f, vtau, res.shape(x), res.penetration(x));
-    sol.converged = converged;
-    sol.root = root;
-    sol.code = code;
-    sol.reason = std::move(reason);
-    sol.iterations = iterations;
-    sol.residual = rmax;
-    // chi's graded panels halve toward the end y = l, where a(y) vanishes like a square root: an
-    // n-point rule there errs by ~(3 + sqrt 8)^(-2n) (detail/graded_panels.hpp), 7e-10 at n = 6.
-    // Integrals exact to rounding (quadrature_tolerance 0) take at least the 12-point rule; a
-    // tolerance, the solver's own rule (docs/line-solver.md, "Rolling friction").
-    if constexpr (Quadrature::points < 12) {
-      sol.chi = options_.quadrature_tolerance > 0
-                    ? detail::line_rolling_friction<Quadrature>(sol)
-                    : detail::line_rolling_friction<GaussLegendre<Real, 12>>(sol);
-    } else {
-      sol.chi = detail::line_rolling_friction<Quadrature>(sol);
-    }
-    add_warnings(sol, u, std::same_as<typename Residual::drop_type, ParabolicDrop>);
-    if (converged && !root)
-      add_warning(sol, WarningCode::least_squares_minimum, detail::minimum_warning(rmax));
-    return sol;
-  }
+                StopCode code, std::string reason, int iterations) const;
 
   template <class Residual>
   Solution failure(const Units& u, const StaticLineContact<Real>& slow, Real c, Real f, Real vtau,
@@ -574,426 +400,45 @@ class LineSolver {
   /// seeds the iteration only where the one from the cold start stops short.
   template <class Scene>
   Solution solve_spectrum(const Scene& scene, const Solution* start) const
-      requires(!SingleTimeModel<Material>) {
-    using std::cbrt;
-    using std::log;
-    using std::pow;
-    constexpr bool ellipsoid = std::same_as<Scene, LineScene<Real>>;
-    scene.validate();
-    detail::require(options_.basis == LineBasis::t_squared && options_.oversampling == 1, "basis",
-                    int(options_.basis),
-                    "LineBasis::t_squared with oversampling 1 for a material with a spectrum");
-    const Real sqrt_eps = std::sqrt(std::numeric_limits<Real>::epsilon());
-    const Real c = material_.instantaneous_compliance();
-    const auto& terms = material_.memory_terms();
-    detail::require_spectrum_terms(terms.size(), "line");
-    Real creep_ratio = 0;
-    for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
-    const Real c1 = [&] {
-      if constexpr (ellipsoid)
-        return scene.c1;
-      else
-        return Real(scene.roller.c1());
-    }();
-    const auto inputs = [&] {
-      std::string roller;
-      if constexpr (ellipsoid)
-        roller = ", c2 = " + detail::format_value(scene.c2);
-      else
-        roller = " (a roller profile)";
-      return "c1 = " + detail::format_value(c1) + roller +
-             ", load = " + detail::format_value(scene.load) +
-             ", speed = " + detail::format_value(scene.speed) +
-             ", compliance = " + detail::format_value(c) +
-             ", sum of f = " + detail::format_value(creep_ratio) +
-             ", terms = " + std::to_string(terms.size());
-    };
-    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-    // The long-term static contact, compliance c (1 + F): the unit of length.
-    Units u;
-    StaticLineContact<Real> slow;
-    std::optional<StaticProfileContact<Real>> slow_profile;  // a profile's, in the caller's units
-    // A profile whose drop is not even (a tilt): the asymmetric contact ((RP5) with (RP7)).
-    bool asymmetric = false;
-    if constexpr (!ellipsoid) asymmetric = !scene.roller.symmetric();
-    if constexpr (ellipsoid) {
-      std::tie(u, slow) = ellipse_units(scene, c, creep_ratio, inputs);
-    } else {
-      slow_profile = static_profile_contact(scene.roller, (1 + creep_ratio) * c * scene.load,
-                                            profile_static_terms);
-      if (!slow_profile->converged) return profile_static_failure(*slow_profile, c, Real(0));
-      const Real a0_caller = slow_profile->a(slow_profile->centre());
-      u = Units::profile(c1, a0_caller);
-      const auto in_units = profile_in_units(*slow_profile, u, a0_caller, Real(0), asymmetric);
-      slow = {in_units.first.a_ref, in_units.first.l, in_units.second};
-    }
-    // Classify the terms (lengths in units). Relaxed: V tau_k <= sqrt(eps) a0 moves a, b and
-    // chi/C1 by O(V tau_k) <= sqrt(eps) a0 (P6), below the line theory's own error, and keeps the
-    // strips out of the slow regime of the line equations (docs/line-solver.md), where they have
-    // no root. Relaxed terms: c -> c (1 + relaxed), the active f -> f / (1 + relaxed) (R6b).
-    // Terms whose memory acts as relaxed or as glassy to within the line method's spectrum
-    // budget are folded or dropped as well (S21).
-    auto classes =
-        detail::classify_spectrum(terms, scene.speed, u.length, sqrt_eps * slow.a0, slow.a0,
-                                  creep_ratio, line_spectrum_budget<Real>(), slow.l);
-    const Real relaxed = classes.relaxed;
-    // Near-equal times merged where the closed-form strip would lose digits ((S19), (S20)).
-    const auto conditioned = detail::condition_spectrum(
-        std::move(classes.active), times_power_of_two(Real(1), u.length) / scene.speed);
-    const auto& merged = conditioned.terms;
-    const Real c_eff = c * (1 + relaxed);
-    Solution sol{};
-    sol.c1 = c1;
-    sol.active_terms = static_cast<int>(merged.size());
-    sol.spectrum_error = conditioned.spectrum_error + classes.error;
-    if (merged.size() <= 1) {
-      // The standard linear solid (or the elastic solid) of the remaining compliance: its own
-      // solver, in the caller's units.
-      const Real pi = boost::math::constants::pi<Real>();
-      const Real mu = 1 / (2 * pi * c_eff);  // c = (1 - nu)/(2 pi mu) with nu = 0
-      LineSolution<Real, Quadrature> one = [&] {
-        if (merged.empty()) {
-          const LineSolver<Real, Elastic<Real>, Quadrature> elastic(Elastic<Real>(mu, Real(0)),
-                                                                    options_);
-          const auto e = elastic.solve(scene);
-          return LineSolution<Real, Quadrature>(e);
-        }
-        // tau back from lambda (units) through the speed: lambda 2^length / V.
-        const Real tau = times_power_of_two(merged[0].q, u.length) / scene.speed;
-        const LineSolver<Real, StandardLinearSolid<Real>, Quadrature> sls(
-            StandardLinearSolid<Real>(mu, Real(0), merged[0].w, tau), options_);
-        const LineSolution<Real, Quadrature>* seed =
-            start != nullptr && start->single ? &*start->single : nullptr;
-        return sls.solve(scene, seed);
-      }();
-      sol.shape = one.shape;
-      sol.d = one.d;
-      sol.chi = one.chi;
-      sol.converged = one.converged;
-      sol.root = one.root;
-      sol.code = one.code;
-      sol.reason = one.reason;
-      sol.iterations = one.iterations;
-      sol.residual = one.residual;
-      sol.warnings = one.warnings;
-      sol.warning_codes = one.warning_codes;
-      sol.load_compliance = one.f0_per_load();
-      if constexpr (ellipsoid) {
-        const auto full =
-            static_line_contact(scene.c1, scene.c2, c * (1 + creep_ratio) * scene.load);
-        sol.a_long_term = full.a0;
-        sol.l_long_term = full.l;
-        sol.d_long_term = full.d;
-      } else {
-        sol.a_long_term = slow_profile->a(slow_profile->centre());
-        sol.l_long_term = slow_profile->half_length();
-        sol.d_long_term = slow_profile->d;
-      }
-      if (!merged.empty()) sol.single = std::move(one);
-      return sol;
-    }
-    const Solution base = sol;
-    const SpectrumLengths<Real>& lengths = conditioned.lengths;
-    // The static contact of the terms solved for, c_eff (1 + F'), in the same units: lengths
-    // scale as the cube root of the compliance (Eq. 47 with (48)), d as its square; a profile's
-    // is solved for (static_profile_contact, its a(0) in the caller's units eff_a0).
-    const Real s = cbrt((1 + relaxed) * (1 + lengths.creep_ratio) / (1 + creep_ratio));
-    StaticLineContact<Real> eff{slow.a0 * s, slow.l * s, slow.d * s * s};
-    Real load_target = u.c1 * eff.a0 * eff.a0 * eff.l / 3;
-    const Real eff_load = c_eff * (1 + lengths.creep_ratio) * scene.load;  // (1 + F') c_eff P
-    Real eff_a0 = 0;
-    std::optional<StaticProfileContact<Real>> eff_profile;
-    if constexpr (!ellipsoid) {
-      eff_profile = static_profile_contact(scene.roller, eff_load, profile_static_terms);
-      if (!eff_profile->converged) return profile_static_failure(*eff_profile, c, Real(0));
-      eff_a0 = eff_profile->a(eff_profile->centre());
-      const auto in_units = profile_in_units(*eff_profile, u, eff_a0, Real(0), asymmetric);
-      eff = {in_units.first.a_ref, in_units.first.l, in_units.second};
-      load_target = times_power_of_two(eff_load, -(u.curvature + 3 * u.length));
-    }
-    const LineSpectrumProblem<Real> prob{u.c1, u.c2, lengths, eff.a0, eff.l, load_target};
-    // The continuation stages from the cold start (seed == nullptr) or from a seed: the solution
-    // in the solver's units.
-    const auto iterate = [&](const Solution* seed) {
-      Solution sol = base;
-      // The cold start: the plane strip of the spectrum at the load whose long-term width is a0
-      // ((S8), TOMS 748 as the plane solver), shrunk as the 3-D widths, (1 + F)^(-1/3).
-      LineShape<Real> shape;
-      LineSpectrumMoments<Real> moments;
-      Real d;
-      if (seed != nullptr) {
-        shape = u.shape_in_units(seed->shape);
-        moments = seed->moments;
-        d = u.penetration_in_units(seed->d);
-      } else {
-        const auto h = [&](Real A) {
-          const auto st = spectrum_strip(A * eff.a0, lengths);
-          return A * A + 2 * st.g0 / (eff.a0 * eff.a0) - 1;
-        };
-        std::uintmax_t max_iter = 200;
-        const Real lo = 1 / std::sqrt(1 + lengths.creep_ratio);
-        const Real h_lo = h(lo), h_hi = h(Real(1));
-        Real A = h_lo >= 0 ? lo : Real(1);
-        if (h_lo < 0 && h_hi > 0) {
-          const auto bracket = boost::math::tools::toms748_solve(
-              h, lo, Real(1), h_lo, h_hi,
-              boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits / 2),
-              max_iter);
-          A = (bracket.first + bracket.second) / 2;
-        }
-        const auto ps = spectrum_strip(A * eff.a0, lengths);
-        moments = {{ps.g0 / (A * A * eff.a0 * eff.a0)}, {ps.centroid / eff.a0}};
-        if constexpr (ellipsoid) {
-          const Real ratio = pow(A, Real(2) / 3);
-          shape = LineShape<Real>{eff.a0, eff.l * ratio, {log(ratio)}, {ps.b / eff.a0}};
-          d = eff.d * ratio * ratio;
-        } else {
-          // (RP8): the static contact at the compliance load whose (48) is A^(2/3) times eff's.
-          const auto at_load =
-              static_profile_contact(scene.roller, eff_load * A * A, profile_static_terms);
-          std::tie(shape, d) = profile_in_units(at_load.converged ? at_load : *eff_profile, u,
-                                                eff_a0, ps.b / eff.a0, asymmetric);
-        }
-      }
-      const numerics::LeastSquaresOptions<Real> settings = iteration_settings();
-      int iterations = 0;
-      Vector r;
-      numerics::LeastSquaresOutcome out;
-      const auto drop = [&] {
-        if constexpr (ellipsoid)
-          return ParabolicDrop{};
-        else
-          return ProfileDrop<std::remove_cvref_t<decltype(scene.roller)>>(scene.roller, u.length,
-                                                                          u.curvature);
-      }();
-      std::optional<LineSpectrumResidual<Real, Quadrature, std::remove_const_t<decltype(drop)>>>
-          last;
-      const bool least_squares = minimises();
-      const std::vector<int> stages = detail::continuation_stages(options_.terms);
-      for (std::size_t k = 0; k < stages.size(); ++k) {
-        const int n = stages[k];
-        last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop,
-                     asymmetric);
-        Vector x = last->pack(shape, moments, d);
-        r.resize(last->equations());
-        if (!(*last)(x, r)) {
-          out = {};
-          out.undefined = true;
-          out.code = StopCode::outside_domain;
-          out.reason = "initial guess outside the domain";
-          break;
-        }
-        out = numerics::levenberg_marquardt(*last, x, r,
-                                            stage_settings(settings, k, k + 1 == stages.size()));
-        iterations += out.iterations;
-        // The last stage: where the equations have no root, the least-squares solution.
-        if (n == stages.back() && least_squares && !out.converged && !out.undefined)
-          out = detail::least_squares_solution(*last, x, r, settings, iterations);
-        shape = last->shape(x);
-        moments = last->moments(x);
-        d = last->penetration(x);
-        if (out.undefined) break;
-      }
-      const Real rmax = r.size() ? Real(r.cwiseAbs().maxCoeff()) : Real(0);
-      sol.shape = shape;
-      sol.moments = moments;
-      sol.d = d;
-      // A certified least-squares minimum is converged (as the one-term solver's); without the
-      // minimisation (LineOptions::least_squares off, or a difference Jacobian) only a root is.
-      sol.converged =
-          out.converged && !out.undefined && (least_squares || rmax <= root_tolerance());
-      sol.root = sol.converged && rmax <= root_tolerance();
-      sol.code = out.converged && !sol.converged ? StopCode::no_descent : out.code;
-      sol.reason = out.converged && !sol.converged
-                       ? "a least-squares minimum (the spectrum's line equations have no root here)"
-                       : out.reason;
-      sol.iterations = iterations;
-      sol.residual = out.undefined ? std::numeric_limits<Real>::quiet_NaN() : rmax;
-      sol.chi = (boost::math::isfinite)(rmax) ? u.c1 * last->centroid(shape, moments) : Real(0);
-      sol.a_long_term = slow.a0;
-      sol.l_long_term = slow.l;
-      sol.d_long_term = slow.d;
-      sol.load_compliance = c_eff * (1 + lengths.creep_ratio);
-      if (sol.converged && !(sol.d > 0 && shape.a(shape.centre) > 0 && shape.l > 0)) {
-        sol.converged = false;
-        sol.root = false;
-        sol.code = StopCode::not_a_contact;
-        sol.reason =
-            "a root of the line equations that is not a contact (d, a at the centre or l "
-            "not positive)";
-      }
-      if constexpr (!ellipsoid) check_body_end(sol, scene.roller, u);
-      if (sol.converged && !sol.root)
-        add_warning(sol, WarningCode::least_squares_minimum, detail::minimum_warning(rmax));
-      add_domain_warnings(sol, u);
-      return sol;
-    };
-    // The cold start first, a seed only where it stops short (docs/line-solver.md, "Materials
-    // with a spectrum"): the cold start carries the strips' moments at the scene's speed, a
-    // neighbouring speed's seed those of its own, and from it the iteration stopped short (the
-    // 12-term rubber of rubber_prony_bem.json at 0 degC, 0.01 m/s from 0.001 m/s) or reached a
-    // root that is not the contact (l/a(0) = 0.67 on the paper's proportions at V = 10 from
-    // V = 1) where the cold start converges, in no fewer iterations than the cold start.
-    Solution result = iterate(nullptr);
-    if (start != nullptr && !result.converged && usable_seed(*start) &&
-        !start->moments.gamma.empty()) {
-      Solution seeded = iterate(start);
-      if (seeded.converged) {
-        seeded.iterations += result.iterations;
-        add_warning(seeded, WarningCode::solved_from_seed,
-                    "the iteration from the cold start stopped (" + result.reason +
-                        "): solved from the seed");
-        result = std::move(seeded);
-      } else {
-        result.iterations += seeded.iterations;
-        add_warning(result, WarningCode::seed_failed,
-                    "the iteration from the seed stopped too (" + seeded.reason + ")");
-      }
-    }
-    return detail::in_caller_units(std::move(result), u, c1, inputs);
-  }
+      requires(!SingleTimeModel<Material>);
+  /// What the steps of solve_spectrum share: the scene, its compliance, units and long-term
+  /// static contact, the classified terms and, for two or more active ones, the static contact of
+  /// the terms solved for and the residual's constants (line/detail/line_solver_spectrum.hpp).
+  template <class Scene>
+  struct SpectrumRun;
+  /// solve_spectrum's long-term static contact, compliance c (1 + F), and the units it sets;
+  /// false where a profile's does not converge (then run.slow_profile says why).
+  template <class Scene, class Inputs>
+  bool spectrum_long_term(SpectrumRun<Scene>& run, const Inputs& inputs) const;
+  /// solve_spectrum with at most one active term: the standard linear solid (or the elastic
+  /// solid) of the remaining compliance by its own solver, in the caller's units.
+  template <class Scene>
+  Solution spectrum_single(const SpectrumRun<Scene>& run, Solution sol,
+                           const Solution* start) const;
+  /// The static contact of the terms solved for and the residual's constants (run.eff,
+  /// run.prob); false where a profile's does not converge (then run.eff_profile says why).
+  template <class Scene>
+  static bool spectrum_effective(SpectrumRun<Scene>& run);
+  /// The start of a spectrum's iteration: the seed in the solver's units, or the cold start.
+  template <class Scene>
+  static void spectrum_start(const SpectrumRun<Scene>& run, const Solution* seed,
+                             LineShape<Real>& shape, LineSpectrumMoments<Real>& moments, Real& d);
+  /// The continuation stages from the cold start (seed == nullptr) or from a seed: the solution
+  /// in the solver's units.
+  template <class Scene>
+  Solution spectrum_iterate(const SpectrumRun<Scene>& run, const Solution* seed) const;
 
   Material material_;
   LineOptions options_;
 };
 
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
-auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
-                                                   const Solution* start) const -> Solution {
-  if constexpr (!SingleTimeModel<Material>) {
-    return solve_spectrum(scene, start);
-  } else {
-    scene.validate();
-    // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic): the
-    // strips' G (36) and the leading-edge condition's kernel are formed from V tau and f.
-    const Real c = material_.instantaneous_compliance();
-    const PronyTerm<Real> memory = detail::single_memory_term(material_);
-    const Real f = memory.f;
-    const auto inputs = [&] {
-      return "c1 = " + detail::format_value(scene.c1) + ", c2 = " + detail::format_value(scene.c2) +
-             ", load = " + detail::format_value(scene.load) +
-             ", speed = " + detail::format_value(scene.speed) +
-             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-             ", tau = " + detail::format_value(memory.tau);
-    };
-    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-    // Scaling (docs/theory.md, "Scaling"): every product below rounds as in the caller's units.
-    // The long-term static contact has the compliance (1 + f) c.
-    const std::pair<Units, StaticLineContact<Real>> long_term = ellipse_units(scene, c, f, inputs);
-    const Units u = long_term.first;
-    const StaticLineContact<Real> slow = long_term.second;
-    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
-    const Real eps = std::numeric_limits<Real>::epsilon();
-    Solution sol = [&] {
-      if constexpr (Material::is_viscoelastic) {
-        if (f > 0 && vtau > 0) {
-          if (strip_is_glassy(vtau, f, slow.a0)) {
-            // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
-            const auto [fast_units, fast] = ellipse_units(scene, c, Real(0), inputs);
-            const int shift = fast_units.length - u.length;  // to the units of the long-term one
-            const StaticLineContact<Real> glassy{times_power_of_two(fast.a0, shift),
-                                                 times_power_of_two(fast.l, shift),
-                                                 times_power_of_two(fast.d, 2 * shift)};
-            // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
-            return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
-          }
-          if (vtau > eps * slow.a0)
-            return rolling_from(scene, u, slow, problem(u, slow, f, vtau), c, start);
-        }
-      }
-      return closed_form(u, slow, slow, c, f, "static (closed form)");
-    }();
-    return detail::in_caller_units(std::move(sol), u, scene.c1, inputs);
-  }
-}
+}  // namespace viscoroll
 
-// Out of the class (not inline), as solve(LineScene) is: an explicit instantiation
-// declaration (compiled mode) then keeps it out of the including translation unit.
-template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
-auto LineSolver<Real, Material, Quadrature>::solve_profile(
-    const LineProfileScene<ProfileView<Real>>& scene, const Solution* start) const -> Solution {
-  using Profile = ProfileView<Real>;
-  if constexpr (!SingleTimeModel<Material>) {
-    return solve_spectrum(scene, start);
-  } else {
-    scene.validate();
-    const Profile& roller = scene.roller;
-    const Real c = material_.instantaneous_compliance();
-    const PronyTerm<Real> memory = detail::single_memory_term(material_);
-    const Real f = memory.f;
-    const Real c1 = roller.c1();
-    // A drop that is not even (a tilt): the contact [c - l, c + l] with odd parts ((RP6), (RP7)).
-    const bool asymmetric = !roller.symmetric();
-    const auto inputs = [&] {
-      return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(scene.load) +
-             ", speed = " + detail::format_value(scene.speed) +
-             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-             ", tau = " + detail::format_value(memory.tau) + ", a roller profile";
-    };
-    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
-    const StaticProfileContact<Real> slow_c =
-        static_profile_contact(roller, (1 + f) * c * scene.load, profile_static_terms);
-    if (!slow_c.converged) return profile_static_failure(slow_c, c, f);
-    const Real a0_caller = slow_c.a(slow_c.centre());
-    const Units u = Units::profile(c1, a0_caller);
-    const int d_unit = u.curvature + 2 * u.length;
-    const auto in_units = [&](const StaticProfileContact<Real>& s, Real b_over) {
-      return profile_in_units(s, u, a0_caller, b_over, asymmetric);
-    };
-    const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
-    const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
-    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
-    const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
-                                     const char* reason) {
-      Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
-      sol.reason = reason;
-      add_warnings(sol, u, false);
-      return sol;
-    };
-    Solution sol = [&] {
-      if constexpr (Material::is_viscoelastic) {
-        if (f > 0 && vtau > 0) {
-          if (strip_is_glassy(vtau, f, slow.a0)) {
-            const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
-            if (fast.converged)
-              return static_solution(in_units(fast, Real(0)), Real(0),
-                                     "glassy limit (static profile contact)");
-          }
-          if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
-            const LineProblem<Real> prob{
-                u.c1,
-                Real(0),
-                vtau,
-                f,
-                slow.a0,
-                slow.l,
-                times_power_of_two((1 + f) * c * scene.load, -(d_unit + u.length))};
-            // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
-            // the long-term one's, b the plane's.
-            const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
-              if (ps.a == 1) return in_units(slow_c, ps.b);
-              const auto s = static_profile_contact(roller, (1 + f) * c * scene.load * ps.a * ps.a,
-                                                    profile_static_terms);
-              return in_units(s.converged ? s : slow_c, ps.b);
-            };
-            const LineScene<Real> plane{
-                .c1 = c1, .c2 = Real(0), .load = scene.load, .speed = scene.speed};
-            return rolling_from(plane, u, slow, prob, c, start,
-                                ProfileDrop<Profile>(roller, u.length, u.curvature), cold,
-                                asymmetric);
-          }
-        }
-      }
-      return static_solution(long_term, f, "static (static profile contact)");
-    }();
-    check_body_end(sol, roller, u);
-    return detail::in_caller_units(std::move(sol), u, c1, inputs);
-  }
-}
+#include <viscoroll/line/detail/line_solver_profile.hpp>
+#include <viscoroll/line/detail/line_solver_rolling.hpp>
+#include <viscoroll/line/detail/line_solver_spectrum.hpp>
+
+namespace viscoroll {
 
 /// The scalar deduced from the material: LineSolver solver(StandardLinearSolid<double>(...)).
 template <ConstitutiveModel Material>

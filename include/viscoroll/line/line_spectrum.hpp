@@ -51,9 +51,16 @@ Real line_spectrum_budget() {
 /// int F0 dy = (1 + F) c P, Eq. (47) with (52).
 template <RealScalar Real>
 struct LineSpectrumProblem {
+  /// C1 and C2 of the scene.
+  ///@{
   Real c1, c2;
+  ///@}
+  /// The spectrum's lengths at the scene's speed.
   SpectrumLengths<Real> lengths;
+  /// The long-term static contact's a(0) and l, the scales, and the load target (1 + F) c P.
+  ///@{
   Real a_ref, l_ref, load_target;
+  ///@}
 };
 
 /// Residual of the spectrum's line equations at N + 1 collocation points (Chebyshev points in u).
@@ -69,7 +76,9 @@ template <RealScalar Real, class Quadrature, class Drop = ParabolicDrop>
 requires NodalQuadratureRule<Quadrature, Real> && RollerDrop<Drop, Real, LineSpectrumProblem<Real>>
 class LineSpectrumResidual {
  public:
+  /// A column vector of unknowns or residuals.
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
+  /// A dense matrix (the Jacobian).
   using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 
   /// basis: the expansion variable of every series (LineBasis::s_mapped with scale
@@ -124,13 +133,20 @@ class LineSpectrumResidual {
   /// The terms whose leading-edge condition carries the line integrals (S12).
   int line_terms() const { return int(std::count(line_term_.begin(), line_term_.end(), true)); }
 
+  /// N, the number of coefficients of ln a.
   int terms() const { return n_; }
+  /// The collocation points: N + 1, twice that for an asymmetric contact.
   int points() const { return (n_ + 1) * (asymmetric_ ? 2 : 1); }
+  /// 4N + 5 unknowns, 8N + 9 for an asymmetric contact.
   int unknowns() const { return 4 * n_ + 5 + (asymmetric_ ? 4 * n_ + 4 : 0); }
+  /// Whether the contact has odd parts and a centre.
   bool asymmetric() const { return asymmetric_; }
+  /// Four equations at each point, then the load.
   int equations() const { return 4 * points() + 1; }
+  /// The scene's constants.
   const LineSpectrumProblem<Real>& problem() const { return p_; }
 
+  /// The contact's shape a(y), b(y) and l of the unknowns x.
   LineShape<Real> shape(const Vector& x) const {
     using std::exp;
     LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[4 * n_ + 3]), {}, {}, basis_, scale_};
@@ -143,6 +159,7 @@ class LineSpectrumResidual {
     }
     return s;
   }
+  /// The series gamma and kappa of the unknowns x.
   LineSpectrumMoments<Real> moments(const Vector& x) const {
     LineSpectrumMoments<Real> m;
     for (int k = 0; k <= n_; ++k) {
@@ -155,6 +172,7 @@ class LineSpectrumResidual {
     }
     return m;
   }
+  /// The penetration d of the unknowns x.
   Real penetration(const Vector& x) const { return x[4 * n_ + 4] * p_.c1 * p_.a_ref * p_.a_ref; }
 
   /// The unknowns of a shape, moments and penetration (series padded with zeros or truncated).
@@ -192,8 +210,12 @@ class LineSpectrumResidual {
   /// The line functions at y from the expansions: a, b, F0 = C1 a^2 (1/4 + gamma/2) (33), the
   /// centroid kappa of the strip (from b) and Q_k = F0 (1 - (b + kappa + sum mu)/lambda_k) (S14).
   struct Functions {
+    /// a, b, gamma = G0/a^2, the centroid kappa and F0 at y.
+    ///@{
     Real a, b, gamma, kappa, f0;
+    ///@}
   };
+  /// The line functions at y of a shape and its moments (all 0 but b where a = 0).
   Functions functions(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y) const {
     const Real a = s.a(y);
     if (!(a > 0)) return {Real(0), s.b(y), Real(0), Real(0), Real(0)};
@@ -203,6 +225,7 @@ class LineSpectrumResidual {
     return {a, s.b(y), gamma, mo.kappa_at(u, t) * p_.a_ref,
             p_.c1 * a * a * (Real(1) / 4 + gamma / 2)};
   }
+  /// Q_k = F0 (1 - (b + kappa)/lambda_k) of term k (S14).
   Real q(const Functions& f, std::size_t k) const {
     return f.f0 * (1 - (f.b + f.kappa) / p_.lengths.retardation[k]);
   }
@@ -417,11 +440,23 @@ class LineSpectrumResidual {
       strip_row(ss.centroid, ss.centroid_a, 1 / ar, 3 * m + i);
       add_series_row(J, 3 * m + i, ti.data(), 0, 0, 0, -1 / ar, 1);
     }
+    load_row(s, mo, r, jac);
+    for (int i = 0; i < r.size(); ++i)
+      if (!(boost::math::isfinite)(r[i])) return false;
+    return true;
+  }
+
+  /// The load equation, row 4 m of evaluate(): (52) integrated, int F0 dy / P - 1, and with
+  /// `jac` its row of the Jacobian.
+  void load_row(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Vector& r,
+                Matrix* jac) const {
+    const int m = points(), il = 4 * n_ + 3;
+    const Real c1 = p_.c1;
     const Real total = load(s, mo);
     r[4 * m] = total / p_.load_target - 1;
     if (jac) {
       // d load = sum_j w_j dF0(y_j) on load()'s nodes (fixed in t), and load d ln l.
-      std::vector<Real> nodes, weights, t(nt);
+      std::vector<Real> nodes, weights, t(series_values());
       rule_->load(s, asymmetric_, nodes, weights);
       for (std::size_t j = 0; j < nodes.size(); ++j) {
         const Functions f = functions(s, mo, nodes[j]);
@@ -432,9 +467,6 @@ class LineSpectrumResidual {
       }
       (*jac)(4 * m, il) += total / p_.load_target;
     }
-    for (int i = 0; i < r.size(); ++i)
-      if (!(boost::math::isfinite)(r[i])) return false;
-    return true;
   }
 
   LineSpectrumProblem<Real> p_;

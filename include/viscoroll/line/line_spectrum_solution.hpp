@@ -24,15 +24,24 @@ namespace viscoroll {
 /// line_shape.hpp's; empty otherwise).
 template <RealScalar Real>
 struct LineSpectrumMoments {
+  /// The even Chebyshev coefficients of gamma = G0/a^2 and kappa/a_ref.
+  ///@{
   std::vector<Real> gamma, kappa;
+  ///@}
+  /// The odd parts' coefficients (empty for a symmetric contact).
+  ///@{
   std::vector<Real> gamma_odd{}, kappa_odd{};
+  ///@}
+  /// The even part of gamma at u.
   Real gamma_at(Real u) const { return LineShape<Real>::chebyshev(gamma, u); }
+  /// The even part of kappa/a_ref at u.
   Real kappa_at(Real u) const { return LineShape<Real>::chebyshev(kappa, u); }
   /// gamma and kappa/a_ref at u with their odd parts at t.
   Real gamma_at(Real u, Real t) const {
     if (gamma_odd.empty()) return gamma_at(u);
     return gamma_at(u) + t * LineShape<Real>::chebyshev(gamma_odd, u);
   }
+  /// kappa/a_ref at u with its odd part at t.
   Real kappa_at(Real u, Real t) const {
     if (kappa_odd.empty()) return kappa_at(u);
     return kappa_at(u) + t * LineShape<Real>::chebyshev(kappa_odd, u);
@@ -66,6 +75,7 @@ struct LineSpectrumSolution {
   /// (docs/theory.md (S19), (S20)) plus the share of the terms folded into the compliance or
   /// dropped as acting relaxed or glassy (S21), at most line_spectrum_budget(); 0 if neither.
   Real spectrum_error{};
+  /// C1 of the scene.
   Real c1;
   /// The long-term compliance of the terms solved for, c (1 + relaxed)(1 + F') (Eq. 47 with
   /// (52): F0 integrates to it times the load); f0_per_load() reads it.
@@ -101,11 +111,15 @@ struct LineSpectrumSolution {
     return out;
   }
 
+  /// The contact's half length l.
   Real l() const { return shape.l; }
   /// The contact's ends c - l and c + l (-l and l for a symmetric contact).
   Real y_minus() const { return shape.centre - shape.l; }
+  /// c + l.
   Real y_plus() const { return shape.centre + shape.l; }
+  /// The half width a(y) of the contact.
   Real a(Real y) const { return shape.a(y); }
+  /// b(y), the offset of the contact's centre ahead of the roller's axis.
   Real b(Real y) const { return shape.b(y); }
   /// F0(y) = C1 a^2 (1/4 + G0/(2 a^2)), Eq. (33) with (S8): the load per unit length times the
   /// long-term compliance of the terms solved for.

@@ -64,6 +64,7 @@ struct PaperLeadingEdgeOptions {
   /// ~ h on the innermost panel); < 0 selects digits + 4 of the scalar type.
   int log_levels = -1;
 
+  /// Throws std::invalid_argument naming the first setting out of its range.
   void validate() const {
     operators.validate();
     detail::require(kernel_levels <= 1000, "kernel_levels", kernel_levels, "<= 1000");
@@ -94,8 +95,10 @@ class PaperLeadingEdgeOperators {
     log_levels_ = options.log_levels >= 0 ? options.log_levels : digits + 4;
   }
 
+  /// The LineOperators whose panels both forms use.
   const LineOperators<Real, Quadrature>& operators() const { return ops_; }
 
+  /// The right side of (44) in the form (L2) at y.
   template <class F>
   Real kernel(const F& q, Real vtau, Real y) const {
     detail::require_positive("vtau", vtau);
@@ -104,6 +107,7 @@ class PaperLeadingEdgeOperators {
     return leading_edge_kernel(nd, ops_.differences(nd, q, qy), qy, vtau);
   }
 
+  /// The right side of (44) as printed at y (an independent check of kernel()).
   template <class F>
   Real literal(const F& q, Real vtau, Real y) const {
     using special::struve_h0_minus_y0;
@@ -160,6 +164,7 @@ Real leading_edge_bessel_term_scaled(Real c1, Real a, Real b, Real g, Real vtau)
 /// panels of PaperLeadingEdgeOperators (the residual's node set is graded for the kernels of
 /// (L6), not for kappa's s ln s at the scale V tau), times e^{x0/V} to the scaling of (42).
 struct PaperLeadingEdge {
+  /// The right side of (44) at y, (L2) times e^(x0/V tau).
   template <class Quadrature, class Real>
   static Real right(const LineProblem<Real>& p, const LineShape<Real>& s, Real y, Real x0,
                     const LineNodes<Real>&, const std::vector<Real>&, Real) {

@@ -42,7 +42,9 @@ namespace viscoroll {
 enum class DmaModulus { shear, tensile };
 
 template <RealScalar Real>
+/// How read_dma_csv reads the moduli.
 struct DmaCsvOptions {
+  /// Whether the storage_pa and loss_pa columns are shear (G', G'') or tensile (E', E'') moduli.
   DmaModulus modulus = DmaModulus::shear;
   /// Poisson's ratio for the tensile -> shear conversion G = E / (2 (1 + nu)).
   Real nu = Real(0.5);
@@ -52,15 +54,22 @@ struct DmaCsvOptions {
 /// Celsius; NaN when the file has no temperature_c column).
 template <RealScalar Real>
 struct DmaPoint {
+  /// The measurement's frequency f (Hz), > 0.
   Real frequency_hz;
+  /// G' (Pa), > 0 (converted to shear if the file holds E').
   Real storage;
+  /// G'' (Pa), > 0 (converted to shear if the file holds E'').
   Real loss;
+  /// The temperature (degrees Celsius), NaN without a temperature_c column.
   Real temperature_c;
 };
 
 template <RealScalar Real>
+/// The measurements read from a DMA CSV file (read_dma_csv), in file order.
 struct DmaData {
+  /// The measurements.
   std::vector<DmaPoint<Real>> points;
+  /// Whether the file has a temperature_c column (fit_prony then needs a shift law).
   bool has_temperature = false;
 };
 
@@ -189,12 +198,14 @@ DmaData<Real> read_dma_csv_file(const std::filesystem::path& path,
 }
 
 template <RealScalar Real>
+/// The settings of fit_prony.
 struct DmaFitOptions {
   /// Poisson's ratio of the fitted material.
   Real nu = Real(0.5);
   /// Relaxation times per decade of the automatic grid: 10^(k / times_per_decade) s, k integer,
   /// spanning 1/(2 pi f) of the (reduced) data widened by margin_decades at each end.
   int times_per_decade = 2;
+  /// Decades added to the automatic grid at each end.
   Real margin_decades = 1;
   /// Explicit relaxation times (s); if non-empty, used instead of the automatic grid.
   std::vector<Real> times;
@@ -206,24 +217,31 @@ struct DmaFitOptions {
 };
 
 template <RealScalar Real>
+/// How well fit_prony's Prony series reproduces the data (relative errors).
 struct DmaFitReport {
-  Real max_storage_error;  // max_i |G'_fit / G'_data - 1|
-  Real rms_storage_error;  // root mean square of the same
-  Real max_loss_error;     // max_i |G''_fit / G''_data - 1|
+  Real max_storage_error;  ///< max_i |G'_fit / G'_data - 1|
+  Real rms_storage_error;  ///< root mean square of the same
+  Real max_loss_error;     ///< max_i |G''_fit / G''_data - 1|
+  /// The root mean square of the loss modulus' relative errors.
   Real rms_loss_error;
-  std::size_t nonzero_terms;    // relaxation terms with g_j > 0
-  std::size_t candidate_terms;  // relaxation times offered to the fit
+  std::size_t nonzero_terms;    ///< relaxation terms with g_j > 0
+  std::size_t candidate_terms;  ///< relaxation times offered to the fit
+  /// The iterations of the non-negative least squares.
   int nnls_iterations;
+  /// Whether the non-negative least squares converged.
   bool nnls_converged;
   /// max(max_storage_error, max_loss_error) > poor_fit_threshold, or NNLS did not converge.
   bool poor;
-  std::vector<Real> reduced_frequency_hz;  // f a_T of each point (the master curve abscissa)
-  std::string summary;                     // one line with the numbers above
+  std::vector<Real> reduced_frequency_hz;  ///< f a_T of each point (the master curve abscissa)
+  std::string summary;                     ///< one line with the numbers above
 };
 
 template <RealScalar Real>
+/// What fit_prony returns: the fitted material and how well it fits.
 struct DmaFit {
+  /// The fitted relaxation form: G_inf, nu and the terms with g_j > 0.
   PronyRelaxation<Real> material;
+  /// The errors of the fit.
   DmaFitReport<Real> report;
 };
 

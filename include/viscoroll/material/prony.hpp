@@ -30,7 +30,9 @@ namespace viscoroll {
 /// One term of the relaxation form (R1): modulus g_i (Pa) and relaxation time rho_i (s).
 template <RealScalar Real>
 struct RelaxationTerm {
+  /// g_i, the term's modulus (Pa), >= 0.
   Real g;
+  /// rho_i, its relaxation time (s), > 0.
   Real rho;
 };
 
@@ -63,8 +65,11 @@ class PronyRelaxation;
 template <RealScalar Real>
 class PronyCreep {
  public:
+  /// The scalar.
   using real_type = Real;
+  /// True: the solvers keep the viscoelastic terms.
   static constexpr bool is_viscoelastic = true;
+  /// A run-time number of memory terms.
   static constexpr int memory_term_count = dynamic_memory_terms;
 
   /// Throws std::invalid_argument unless mu_d > 0, -1 < nu <= 0.5, every f_k >= 0 and
@@ -80,11 +85,21 @@ class PronyCreep {
     detail::require_finite("sum of f", creep_ratio(), "sum of f finite");
   }
 
+  /// mu_D = G_g, the glassy shear modulus.
   Real mu_d() const { return mu_d_; }
+  /// nu, Poisson's ratio.
   Real nu() const { return nu_; }
   /// The terms as given (not sorted, not merged).
   const std::vector<PronyTerm<Real>>& memory_terms() const { return terms_; }
+  /// The same terms as memory_terms().
   const std::vector<PronyTerm<Real>>& terms() const { return terms_; }
+  /// The material with every retardation time times `a` (> 0): (R13), the TimeScalable concept
+  /// behind at_temperature.
+  PronyCreep time_scaled(Real a) const {
+    std::vector<PronyTerm<Real>> scaled = terms_;
+    for (auto& t : scaled) t.tau *= a;
+    return PronyCreep(mu_d_, nu_, std::move(scaled));
+  }
 
   /// sum_k f_k: the long-term compliance is (1 + sum f_k) times the instantaneous one (R6b).
   Real creep_ratio() const { return detail::sum_creep_ratios(terms_); }
@@ -93,6 +108,7 @@ class PronyCreep {
   Real instantaneous_compliance() const {
     return (1 - nu_) / (2 * boost::math::constants::pi<Real>() * mu_d_);
   }
+  /// (1 + sum f_k) (1 - nu) / (2 pi mu_D), the compliance under a load held for long (R6b).
   Real long_term_compliance() const { return (1 + creep_ratio()) * instantaneous_compliance(); }
   /// G_inf = mu_d / (1 + sum f_k) (R6b).
   Real long_term_modulus() const { return mu_d_ / (1 + creep_ratio()); }
@@ -126,8 +142,11 @@ class PronyCreep {
 template <RealScalar Real>
 class PronyRelaxation {
  public:
+  /// The scalar.
   using real_type = Real;
+  /// True: the solvers keep the viscoelastic terms.
   static constexpr bool is_viscoelastic = true;
+  /// A run-time number of memory terms.
   static constexpr int memory_term_count = dynamic_memory_terms;
 
   /// Throws std::invalid_argument unless g_inf > 0, -1 < nu <= 0.5, every g_i >= 0 and
@@ -153,12 +172,22 @@ class PronyRelaxation {
       creep_terms_.push_back(PronyTerm<Real>{t.w, t.q});
   }
 
+  /// G_inf, the long-term (rubbery) shear modulus.
   Real g_inf() const { return g_inf_; }
+  /// nu, Poisson's ratio.
   Real nu() const { return nu_; }
   /// The relaxation terms as given (not sorted, not merged).
   const std::vector<RelaxationTerm<Real>>& terms() const { return terms_; }
+  /// The material with every relaxation time times `a` (> 0): (R13), the TimeScalable concept
+  /// behind at_temperature.
+  PronyRelaxation time_scaled(Real a) const {
+    std::vector<RelaxationTerm<Real>> scaled = terms_;
+    for (auto& t : scaled) t.rho *= a;
+    return PronyRelaxation(g_inf_, nu_, std::move(scaled));
+  }
   /// G_g = G_inf + sum g_i, the instantaneous modulus (mu_D of Eq. 1).
   Real glassy_modulus() const { return glassy_; }
+  /// mu_D = G_g, the glassy modulus (as glassy_modulus()).
   Real mu_d() const { return glassy_; }
 
   /// (R1): G(t) (Pa), t >= 0. Every term is positive: no cancellation.
@@ -187,8 +216,11 @@ class PronyRelaxation {
   PronyCreep<Real> to_creep() const { return PronyCreep<Real>(glassy_, nu_, creep_terms_); }
 
   // ConstitutiveModel, through the creep form.
+  /// The creep form's terms (f_k, tau_k), sorted by time.
   const std::vector<PronyTerm<Real>>& memory_terms() const { return creep_terms_; }
+  /// sum_k f_k of the creep form: G_g / G_inf - 1.
   Real creep_ratio() const { return detail::sum_creep_ratios(creep_terms_); }
+  /// (1 - nu) / (2 pi G_g): the factor of Eq. (3).
   Real instantaneous_compliance() const {
     return (1 - nu_) / (2 * boost::math::constants::pi<Real>() * glassy_);
   }

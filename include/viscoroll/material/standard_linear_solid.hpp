@@ -17,8 +17,11 @@ namespace viscoroll {
 template <RealScalar Real>
 class StandardLinearSolid {
  public:
+  /// The scalar.
   using real_type = Real;
+  /// True: the solvers keep the viscoelastic terms.
   static constexpr bool is_viscoelastic = true;
+  /// One memory term, (f, tau).
   static constexpr int memory_term_count = 1;
 
   /// Throws std::invalid_argument unless mu_d > 0, -1 < nu <= 0.5, f >= 0, tau >= 0, all finite.
@@ -30,10 +33,18 @@ class StandardLinearSolid {
     detail::require_non_negative("tau", tau);
   }
 
+  /// mu_D, the instantaneous (glassy) shear modulus.
   Real mu_d() const { return mu_d_; }
+  /// nu, Poisson's ratio.
   Real nu() const { return nu_; }
+  /// f, the creep ratio: the rubbery modulus is mu_D / (1 + f).
   Real creep_ratio() const { return f_; }
+  /// tau, the relaxation time of Eq. (1).
   Real relaxation_time() const { return tau_; }
+  /// The solid with tau times `a` (> 0): (R13), the TimeScalable concept behind at_temperature.
+  StandardLinearSolid time_scaled(Real a) const {
+    return StandardLinearSolid(mu_d_, nu_, f_, tau_ * a);
+  }
   /// The spectrum of Eq. (1): the one term (f, tau).
   std::array<PronyTerm<Real>, 1> memory_terms() const { return {PronyTerm<Real>{f_, tau_}}; }
 

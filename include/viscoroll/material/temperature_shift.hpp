@@ -42,6 +42,7 @@ Real checked_shift_factor(Real log_e_factor, Real temperature) {
 template <RealScalar Real>
 class WlfShift {
  public:
+  /// The scalar.
   using real_type = Real;
   /// Throws std::invalid_argument unless c1 > 0, c2 > 0 and t_ref finite.
   WlfShift(Real c1, Real c2, Real t_ref) : c1_(c1), c2_(c2), t_ref_(t_ref) {
@@ -49,8 +50,11 @@ class WlfShift {
     detail::require_positive("c2", c2);
     detail::require_finite("t_ref", t_ref, "t_ref finite");
   }
+  /// c1 of (R11).
   Real c1() const { return c1_; }
+  /// c2 of (R11) (K).
   Real c2() const { return c2_; }
+  /// The reference temperature (degrees Celsius), where a_T = 1.
   Real t_ref() const { return t_ref_; }
 
   /// (R11): log10 a_T. Throws std::invalid_argument naming `temperature` unless
@@ -79,6 +83,7 @@ class WlfShift {
 template <RealScalar Real>
 class ArrheniusShift {
  public:
+  /// The scalar.
   using real_type = Real;
   /// The molar gas constant R, J/(mol K) (exact in the 2019 SI).
   static constexpr long double gas_constant = 8.31446261815324L;
@@ -91,7 +96,9 @@ class ArrheniusShift {
     detail::require((boost::math::isfinite)(t_ref) && t_ref > -Real(celsius_zero), "t_ref", t_ref,
                     "t_ref > -273.15 (degrees Celsius)");
   }
+  /// E_a (J/mol).
   Real activation_energy() const { return e_a_; }
+  /// The reference temperature (degrees Celsius), where a_T = 1.
   Real t_ref() const { return t_ref_; }
 
   /// (R12): ln a_T. Throws std::invalid_argument naming `temperature` unless T > -273.15.
@@ -102,6 +109,7 @@ class ArrheniusShift {
     // 1/T - 1/T_ref = (T_ref - T) / (T T_ref): the difference of temperatures, not of reciprocals.
     return e_a_ / Real(gas_constant) * ((t_ref_ - temperature) / (tk * rk));
   }
+  /// log10 a_T = log_factor(T) / ln 10.
   Real log10_factor(Real temperature) const {
     using std::log;
     return log_factor(temperature) / log(Real(10));
@@ -144,38 +152,21 @@ Real factor_of(const Shift& shift, Real temperature) {
 }
 }  // namespace detail
 
-/// (R13): the material at `temperature` (degrees Celsius): every relaxation time times a_T.
-template <RealScalar Real, class Shift>
-PronyRelaxation<Real> at_temperature(const PronyRelaxation<Real>& m, const Shift& shift,
-                                     Real temperature) {
-  const Real a = detail::factor_of<Real>(shift, temperature);
-  std::vector<RelaxationTerm<Real>> terms = m.terms();
-  for (auto& t : terms) t.rho *= a;
-  return PronyRelaxation<Real>(m.g_inf(), m.nu(), std::move(terms));
-}
+/// A material whose times scale as one (time-temperature superposition, (R13)):
+/// `m.time_scaled(a)` is the same material with every relaxation or retardation time times a > 0.
+/// Models: Elastic (no time), StandardLinearSolid, PronyCreep, PronyRelaxation, and any user
+/// material with that member (tests/material/time_scalable.test.cpp).
+template <class M>
+concept TimeScalable = ConstitutiveModel<M> && requires(const M& m, typename M::real_type a) {
+  { m.time_scaled(a) } -> std::same_as<M>;
+};
 
-/// (R13): the material at `temperature`: every retardation time times a_T.
-template <RealScalar Real, class Shift>
-PronyCreep<Real> at_temperature(const PronyCreep<Real>& m, const Shift& shift, Real temperature) {
-  const Real a = detail::factor_of<Real>(shift, temperature);
-  std::vector<PronyTerm<Real>> terms = m.terms();
-  for (auto& t : terms) t.tau *= a;
-  return PronyCreep<Real>(m.mu_d(), m.nu(), std::move(terms));
-}
-
-/// (R13): the standard linear solid at `temperature`: tau times a_T.
-template <RealScalar Real, class Shift>
-StandardLinearSolid<Real> at_temperature(const StandardLinearSolid<Real>& m, const Shift& shift,
-                                         Real temperature) {
-  const Real a = detail::factor_of<Real>(shift, temperature);
-  return StandardLinearSolid<Real>(m.mu_d(), m.nu(), m.creep_ratio(), m.relaxation_time() * a);
-}
-
-/// An elastic solid has no time: unchanged (the temperature is still validated).
-template <RealScalar Real, class Shift>
-Elastic<Real> at_temperature(const Elastic<Real>& m, const Shift& shift, Real temperature) {
-  (void)detail::factor_of<Real>(shift, temperature);
-  return m;
+/// (R13): the material at `temperature` (degrees Celsius): every time of its spectrum times a_T
+/// of the shift law `shift` (a ShiftLaw, WlfShift, ArrheniusShift or any TemperatureShift); an
+/// elastic solid, which has none, is unchanged (the temperature is still validated).
+template <TimeScalable M, class Shift>
+M at_temperature(const M& m, const Shift& shift, typename M::real_type temperature) {
+  return m.time_scaled(detail::factor_of<typename M::real_type>(shift, temperature));
 }
 
 }  // namespace viscoroll

@@ -27,6 +27,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/outcome.hpp>
 #include <viscoroll/core/required_field.hpp>
+#include <viscoroll/core/solve_inputs.hpp>
 #include <viscoroll/core/spectrum_conditioning.hpp>
 #include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/core/strip.hpp>
@@ -42,8 +43,11 @@ namespace viscoroll {
 /// towards +x at `speed`.
 template <RealScalar Real>
 struct PlaneScene {
+  /// C1 = 1/R, the cylinder's curvature, > 0.
   Real c1 = detail::required_field<Real>();
+  /// W, the load per unit length, > 0.
   Real load = detail::required_field<Real>();
+  /// V, the rolling speed, >= 0.
   Real speed = detail::required_field<Real>();
 
   /// Throws std::invalid_argument naming the parameter unless c1 > 0, load > 0, speed >= 0.
@@ -52,6 +56,11 @@ struct PlaneScene {
     detail::require_positive("load", load);
     detail::require_non_negative("speed", speed);
   }
+  /// "c1 = ..., load = ..., speed = ...": the scene in an error's message.
+  std::string describe() const {
+    return "c1 = " + detail::format_value(c1) + ", load = " + detail::format_value(load) +
+           ", speed = " + detail::format_value(speed);
+  }
 };
 
 /// Runtime settings of the plane solver.
@@ -59,6 +68,7 @@ struct PlaneOptions {
   /// Iterations allowed to the root finder for a (TOMS 748); each costs four Bessel ratios.
   int max_iterations = 100;
 
+  /// Throws std::invalid_argument unless 1 <= max_iterations <= 100000.
   void validate() const {
     detail::require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations",
                     max_iterations, "1 <= max_iterations <= 100000");
@@ -80,6 +90,7 @@ struct PlaneSolution {
   StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
   std::string reason{};                 ///< empty when converged, else why not
   Real residual;                        ///< |A^2 + 2 f/(1+f) (V tau/a0) A R - 1| at the returned a
+  /// The strip's pressure (32), (35), from which pressure() and peak() are read.
   StripPressure<Real, Quadrature> strip;
 
   /// Eq. (35): the pressure at x (moving frame; the cylinder axis is x = 0).
@@ -141,14 +152,17 @@ template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussL
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 class PlaneSolver {
  public:
+  /// PlaneSolution for a SingleTimeModel, PlaneSpectrumSolution for a spectrum.
   using Solution = std::conditional_t<SingleTimeModel<Material>, PlaneSolution<Real, Quadrature>,
                                       PlaneSpectrumSolution<Real, Quadrature>>;
 
+  /// Throws std::invalid_argument for invalid options (PlaneOptions::validate).
   explicit PlaneSolver(Material material, PlaneOptions options = {})
       : material_(std::move(material)), options_(options) {
     options_.validate();
   }
 
+  /// The material.
   const Material& material() const { return material_; }
 
   /// Solves the scene; throws std::invalid_argument for an invalid scene, or one whose solution
@@ -262,23 +276,14 @@ class PlaneSolver {
   /// [glassy, long-term] Hertz widths of the active problem.
   Solution solve_spectrum(const PlaneScene<Real>& scene) const
       requires(!SingleTimeModel<Material>) {
-    scene.validate();
+    const auto inputs = detail::solve_prologue(scene, material_);
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    const Real c = material_.instantaneous_compliance();
+    const Real c = inputs.c;
     const auto& terms = material_.memory_terms();
     detail::require_spectrum_terms(terms.size(), "plane");
     Real creep_ratio = 0;
     for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
-    const auto inputs = [&] {
-      return "c1 = " + detail::format_value(scene.c1) +
-             ", load = " + detail::format_value(scene.load) +
-             ", speed = " + detail::format_value(scene.speed) +
-             ", compliance = " + detail::format_value(c) +
-             ", sum of f = " + detail::format_value(creep_ratio) +
-             ", terms = " + std::to_string(terms.size());
-    };
-    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
     const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
     const auto creep = binary<Real>(1 + creep_ratio);
     const auto a0 =
@@ -374,21 +379,32 @@ class PlaneSolver {
       s.active_terms = static_cast<int>(merged.size());
       s.spectrum.emplace_back(units, c1.m, a, st, lengths, c_eff);
     }
+    in_caller_units(s, units, load, inputs);
+    return s;
+  }
+
+  /// A solution `s` computed in `units` (one term or a spectrum) in the caller's units: each
+  /// number zero or normal and finite, else an error naming the `inputs` (docs/errors.md).
+  template <class Sol, class Inputs>
+  static void in_caller_units(Sol& s, const StripUnits& units, const Binary<Real>& load,
+                              const Inputs& inputs) {
     const int length = units.length, area = 2 * length, curvature = units.curvature;
     const auto in = [&](Real x, int exponent, std::string_view what) {
       return detail::representable(x, exponent, what, inputs);
     };
-    const Real mean_pressure = load.m / (2 * s.a);
-    s.a_long_term =
-        in(s.a_long_term, length, "the long-term half width a0 = sqrt(4 c (1+F) load/c1)");
+    constexpr bool spectrum = requires { s.chi_rounding; };
+    const Real mean_pressure = load.m / (2 * s.a);  // in `units`, before a is converted
+    s.a_long_term = in(s.a_long_term, length,
+                       spectrum ? "the long-term half width a0 = sqrt(4 c (1+F) load/c1)"
+                                : "the long-term half width a0 = sqrt(4 c (1+f) load/c1)");
     s.a = in(s.a, length, "the contact half width a");
     s.b = in(s.b, length, "the offset b of the contact");
-    s.g = in(s.g, area, "G0 of (S8)");
+    s.g = in(s.g, area, spectrum ? "G0 of (S8)" : "G of Eq. (36)");
     s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
+    if constexpr (requires { s.q; }) s.q = in(s.q, curvature + area, "Q of Eq. (46)");
     s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
-    s.chi_rounding = times_power_of_two(s.chi_rounding, curvature + length);
+    if constexpr (spectrum) s.chi_rounding = times_power_of_two(s.chi_rounding, curvature + length);
     in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
-    return s;
   }
 
   Material material_;
@@ -402,19 +418,11 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
   if constexpr (!SingleTimeModel<Material>) {
     return solve_spectrum(scene);
   } else {
-    scene.validate();
     // The material's compliance and its memory term (f, tau) of Eq. (1) (none for Elastic).
-    const Real c = material_.instantaneous_compliance();
+    const auto inputs = detail::solve_prologue(scene, material_);
+    const Real c = inputs.c;
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const Real f = memory.f;
-    const auto inputs = [&] {
-      return "c1 = " + detail::format_value(scene.c1) +
-             ", load = " + detail::format_value(scene.load) +
-             ", speed = " + detail::format_value(scene.speed) +
-             ", compliance = " + detail::format_value(c) + ", f = " + detail::format_value(f) +
-             ", tau = " + detail::format_value(memory.tau);
-    };
-    detail::representable(c, 0, "the instantaneous compliance c", inputs, false);
     // Scaling (docs/theory.md): lengths in units of a power of two near a0, C1 and c in units of
     // their own powers of two; every product below rounds as in the caller's units.
     const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
@@ -439,22 +447,7 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
       // Hertz with the long-term compliance, no Bessel work.
       return static_solution(units, c1.m, a0.m, a0.m, cc.m, f);
     }();
-    // The solution in the caller's units: each number zero or normal and finite, else an error
-    // naming the inputs (docs/errors.md).
-    const int length = units.length, area = 2 * length, curvature = units.curvature;
-    const auto in = [&](Real x, int exponent, std::string_view what) {
-      return detail::representable(x, exponent, what, inputs);
-    };
-    const Real mean_pressure = load.m / (2 * s.a);
-    s.a_long_term =
-        in(s.a_long_term, length, "the long-term half width a0 = sqrt(4 c (1+f) load/c1)");
-    s.a = in(s.a, length, "the contact half width a");
-    s.b = in(s.b, length, "the offset b of the contact");
-    s.g = in(s.g, area, "G of Eq. (36)");
-    s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
-    s.q = in(s.q, curvature + area, "Q of Eq. (46)");
-    s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
-    in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
+    in_caller_units(s, units, load, inputs);
     return s;
   }
 }

@@ -42,6 +42,7 @@
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/plane/detail/memory_integrals.hpp>
+#include <viscoroll/plane/detail/plane_substrate_functions.hpp>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/substrate/substrate.hpp>
 
@@ -82,9 +83,12 @@ struct PlaneSubstrateSolution {
   /// on the half space, or a body with T(0) > 0, the displacement has a free constant and d is
   /// reported for the kernel normalised as -ln|x / a| ((Q3) with l = a): `d_absolute` is false.
   Real d{};
+  /// Whether d is measured from a fixed base (see d).
   bool d_absolute{};
   Real chi{};  ///< rolling-friction coefficient C1 int x p / int p (Eq. 51)
+  ///@{
   Real error_a{}, error_d{}, error_chi{};  ///< estimated absolute errors (Q13)
+  ///@}
   /// Estimated absolute error of the peak pressure (Q13), reported, not asked to meet the
   /// tolerance: a point value converges more slowly than a, d and chi.
   Real error_peak{};
@@ -94,7 +98,9 @@ struct PlaneSubstrateSolution {
   int terms{};           ///< Chebyshev terms N of the returned solution (0 for a spring bed)
   int iterations{};      ///< root-finder evaluations in all
   Real load_residual{};  ///< |int p dx / W - 1| of the returned solution
+  /// The pressure peak, as peak() returns it.
   PressurePeak<Real> peak_{};
+  /// The pressure p(x), as pressure() returns it.
   std::function<Real(Real)> pressure_function;
 
   /// The pressure at x (moving frame; the cylinder axis is x = 0), 0 outside the contact.
@@ -102,117 +108,6 @@ struct PlaneSubstrateSolution {
   /// The pressure peak and its location.
   PressurePeak<Real> peak() const { return peak_; }
 };
-
-namespace detail::plane_substrate {
-
-/// Composite Gauss-Legendre (20 points per panel): calls g(x, w) for every node of [lo, hi].
-template <class Real, class G>
-void gauss_panel(Real lo, Real hi, G&& g) {
-  using rule = boost::math::quadrature::gauss<Real, 20>;
-  const auto& x = rule::abscissa();
-  const auto& w = rule::weights();
-  const Real mid = (lo + hi) / 2, half = (hi - lo) / 2;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    g(mid - half * x[i], half * w[i]);
-    g(mid + half * x[i], half * w[i]);
-  }
-}
-
-using plane_memory::memory_integrals;
-using plane_memory::MemoryQuadrature;  // (Q6): plane/detail/memory_integrals.hpp
-using plane_memory::tail_integrals;
-
-/// J_k(x), k = 0..n_max, x > 0: above x = n_max + 1 by the upward recurrence from J_0 and J_1;
-/// below it by Miller's backward recurrence J_{k-1} = (2k/x) J_k - J_{k+1} normalised by
-/// J_0 + 2 sum_k J_2k = 1 (A&S 9.1.27, 9.1.46), started far enough above max(n_max, x) for the
-/// scalar's precision.
-template <class Real>
-void bessel_j_sequence(Real x, int n_max, std::vector<Real>& j, std::vector<Real>& buffer) {
-  using std::abs;
-  using std::ceil;
-  using std::sqrt;
-  j.resize(static_cast<std::size_t>(n_max + 1));
-  if (x > Real(n_max + 1)) {
-    // Upward recurrence from J_0, J_1: stable while k < x (A&S 9.12), O(n_max) work.
-    j[0] = boost::math::cyl_bessel_j(0, x);
-    if (n_max >= 1) j[1] = boost::math::cyl_bessel_j(1, x);
-    for (int k = 1; k < n_max; ++k)
-      j[static_cast<std::size_t>(k + 1)] =
-          Real(2 * k) / x * j[static_cast<std::size_t>(k)] - j[static_cast<std::size_t>(k - 1)];
-    return;
-  }
-  const int top = std::max(n_max, static_cast<int>(ceil(x)));
-  int m = top + 24 + static_cast<int>(sqrt(Real(80 * top)));
-  if (m % 2 != 0) ++m;
-  buffer.assign(static_cast<std::size_t>(m + 2), Real(0));
-  const Real big = sqrt(std::numeric_limits<Real>::max()) / 4;
-  Real next = 0,
-       current = std::numeric_limits<Real>::min() * Real(1) / std::numeric_limits<Real>::epsilon();
-  buffer[static_cast<std::size_t>(m)] = current;
-  for (int k = m; k >= 1; --k) {
-    const Real below = Real(2 * k) / x * current - next;
-    next = current;
-    current = below;
-    buffer[static_cast<std::size_t>(k - 1)] = below;
-    if (abs(below) > big) {
-      for (int i = k - 1; i <= m; ++i) buffer[static_cast<std::size_t>(i)] /= big;
-      next /= big;
-      current /= big;
-    }
-  }
-  Real norm = buffer[0];
-  for (int k = 2; k <= m; k += 2) norm += 2 * buffer[static_cast<std::size_t>(k)];
-  for (int k = 0; k <= n_max; ++k)
-    j[static_cast<std::size_t>(k)] = buffer[static_cast<std::size_t>(k)] / norm;
-}
-
-/// (Q6): G_n(s) = int_{-1}^{1} sqrt(1 - t^2) U_n(t) ln|s - t| dt for |s| <= 1:
-/// (pi/2)(s^2 - 1/2 - ln 2) for n = 0, (pi/2)(T_{n+2}(s)/(n+2) - T_n(s)/n) for n >= 1.
-template <class Real>
-std::vector<Real> log_potentials(Real phi, int n_terms) {
-  using std::cos;
-  using std::log;
-  const Real pi = boost::math::constants::pi<Real>();
-  std::vector<Real> g(static_cast<std::size_t>(n_terms));
-  const Real s = cos(phi);
-  g[0] = pi / 2 * (s * s - Real(0.5) - log(Real(2)));
-  for (int n = 1; n < n_terms; ++n)
-    g[static_cast<std::size_t>(n)] =
-        pi / 2 * (cos(Real(n + 2) * phi) / Real(n + 2) - cos(Real(n) * phi) / Real(n));
-  return g;
-}
-
-/// phi_j(y) = int_0^1 u^j e^{-y u} du, j = 0, 1, 2, y >= 0: the series below y = 2, above it
-/// phi_0 = -expm1(-y)/y and phi_j = (j phi_{j-1} - e^-y)/y (errors damped by j/y < 1).
-template <class Real>
-std::array<Real, 3> exponential_moments(Real y) {
-  using std::exp;
-  using std::expm1;
-  std::array<Real, 3> out{};
-  if (y < 2) {
-    for (int j = 0; j < 3; ++j) {
-      Real term = 1, sum = 0;
-      for (int m = 0; m < 80; ++m) {
-        const Real add = term / Real(m + j + 1);
-        sum += add;
-        if (std::abs(static_cast<double>(add)) <=
-            static_cast<double>(std::numeric_limits<Real>::epsilon()) *
-                std::abs(static_cast<double>(sum)) / 4)
-          break;
-        term *= -y / Real(m + 1);
-      }
-      out[static_cast<std::size_t>(j)] = sum;
-    }
-    return out;
-  }
-  const Real e = exp(-y);
-  out[0] = -expm1(-y) / y;
-  out[1] = (out[0] - e) / y;
-  out[2] = (2 * out[1] - e) / y;
-  return out;
-}
-
-}  // namespace detail::plane_substrate
 
 /// Solver of the plane rolling contact of a rigid cylinder on a substrate of a viscoelastic
 /// material: PlaneSubstrateSolver<Real, Material, Body>. The material models ConstitutiveModel and
@@ -224,6 +119,7 @@ requires std::same_as<typename Material::real_type, Real> &&
 }
 class PlaneSubstrateSolver {
  public:
+  /// The solution type.
   using Solution = PlaneSubstrateSolution<Real>;
 
   /// Throws std::invalid_argument naming the option outside its range.
@@ -235,7 +131,9 @@ class PlaneSubstrateSolver {
         "tolerance", options_.tolerance, "64 eps <= tolerance <= 0.1");
   }
 
+  /// The material.
   const Material& material() const { return material_; }
+  /// The substrate.
   const Body& body() const { return body_; }
 
   /// Solves the scene; throws std::invalid_argument naming c1, load or speed outside their ranges.
@@ -345,52 +243,9 @@ class PlaneSubstrateSolver {
     std::vector<Real> s;  ///< collocation points s_j
   };
 
-  System build(const Problem& pr, Real a, int n_terms, bool with_d) const {
-    using std::cos;
-    using std::exp;
-    using std::sin;
-    const Real pi = boost::math::constants::pi<Real>();
-    const int rows = n_terms + 1;
-    System sys;
-    sys.slope.setZero(rows, rows);
-    if (with_d) sys.displacement.setZero(rows, n_terms);
-    sys.s.resize(static_cast<std::size_t>(rows));
-    namespace ps = detail::plane_substrate;
-    const ps::MemoryQuadrature<Real> mq{};
-    std::vector<std::vector<Real>> tails(pr.terms.size());
-    for (std::size_t k = 0; k < pr.terms.size(); ++k)
-      tails[k] = ps::tail_integrals(pr.terms[k].length / a, n_terms, mq);
-    for (int j = 0; j < rows; ++j) {
-      const Real phi = Real(2 * j + 1) * pi / Real(2 * rows);
-      sys.s[static_cast<std::size_t>(j)] = cos(phi);
-      // (Q6): the half space's slope H_n = T_{n+1} and its memory f_k m_n(s; L_k / a).
-      Real t = cos(phi), t_sin = sin(phi);
-      for (int n = 0; n < n_terms; ++n) {
-        sys.slope(j, n) = t;
-        const Real next = t * cos(phi) - t_sin * sin(phi);
-        t_sin = t_sin * cos(phi) + t * sin(phi);
-        t = next;
-      }
-      std::vector<Real> g;
-      if (with_d) {
-        g = ps::log_potentials(phi, n_terms);
-        for (int n = 0; n < n_terms; ++n)
-          sys.displacement(j, n) = (1 + pr.creep) * g[static_cast<std::size_t>(n)] / pi;
-      }
-      for (std::size_t k = 0; k < pr.terms.size(); ++k) {
-        const Real v = pr.terms[k].length / a;
-        const auto m = ps::memory_integrals(phi, v, tails[k], mq);
-        for (int n = 0; n < n_terms; ++n) {
-          sys.slope(j, n) += pr.terms[k].f * m[static_cast<std::size_t>(n)];
-          // (Q9): int e^-eta G_n(s + v eta) d eta = G_n(s) + pi v m_n(s).
-          if (with_d) sys.displacement(j, n) += pr.terms[k].f * v * m[static_cast<std::size_t>(n)];
-        }
-      }
-      sys.slope(j, n_terms) = Real(-1);
-    }
-    if constexpr (Body::kind == SubstrateKind::body) fourier_rows(pr, a, n_terms, with_d, sys);
-    return sys;
-  }
+  /// (Q6), (Q7), (Q9): the System at half width a with N terms (the displacement rows when
+  /// `with_d`), the substrate's remainder subtracted on a body (fourier_rows).
+  System build(const Problem& pr, Real a, int n_terms, bool with_d) const;
 
   /// (Q7), (Q9): subtracts the remainder's slope E_n(s_j) and displacement D_n(s_j),
   ///   E_n(s) = (n+1) int_0^W (T - 1) Re[i (-i)^n Phi e^{i w s}] J_{n+1}(w)/w dw,
@@ -399,50 +254,7 @@ class PlaneSubstrateSolver {
   ///                      E1(W)/2,
   /// T and Phi at q = w / a; panels at most 2 wide (the phases w s and w of J), a/(2h) (T's scale)
   /// and half the distance to Phi's nearest pole a/L_k.
-  void fourier_rows(const Problem& pr, Real a, int n_terms, bool with_d, System& sys) const {
-    using std::exp;
-    using std::min;
-    const int rows = n_terms + 1;
-    const Real w_max = q_max(pr) * a;
-    Real pole = std::numeric_limits<Real>::infinity();  // a / max L_k
-    for (const auto& t : pr.terms) pole = min(pole, a / t.length);
-    const Real width_cap = min(Real(4), a / (2 * pr.omega_scale));
-    std::vector<Real> j_seq, buffer, coef(static_cast<std::size_t>(n_terms));
-    Real w_lo = 0;
-    while (w_lo < w_max) {
-      Real width = width_cap;
-      if (pole < std::numeric_limits<Real>::infinity())
-        width = min(width, std::max(w_lo, pole) / 2);
-      const Real w_hi = min(w_max, w_lo + width);
-      detail::plane_substrate::gauss_panel(w_lo, w_hi, [&](Real w, Real weight) {
-        const Real q = w / a;
-        const Real tm1 = body_.surface_factor(q, pr.nu) - 1;
-        const Complex phi = compliance_ratio(pr, q);
-        detail::plane_substrate::bessel_j_sequence(w, n_terms, j_seq, buffer);
-        for (int n = 0; n < n_terms; ++n)
-          coef[static_cast<std::size_t>(n)] =
-              weight * tm1 * Real(n + 1) * j_seq[static_cast<std::size_t>(n + 1)] / w;
-        for (int j = 0; j < rows; ++j) {
-          const Complex e = phi * std::polar(Real(1), w * sys.s[static_cast<std::size_t>(j)]);
-          const Complex z = Complex(0, 1) * e;                               // i Phi e^{i w s}
-          const Real cycle[4] = {z.real(), z.imag(), -z.real(), -z.imag()};  // Re[(-i)^n z]
-          for (int n = 0; n < n_terms; ++n)
-            sys.slope(j, n) -= coef[static_cast<std::size_t>(n)] * cycle[n % 4];
-          if (with_d) {
-            const Real cd[4] = {e.real(), e.imag(), -e.real(), -e.imag()};
-            for (int n = 0; n < n_terms; ++n)
-              sys.displacement(j, n) -= coef[static_cast<std::size_t>(n)] * cd[n % 4] / w;
-            sys.displacement(j, 0) -= weight * (1 - pr.t0) * (1 + pr.creep) * exp(-w) / (2 * w);
-          }
-        }
-      });
-      w_lo = w_hi;
-    }
-    if (with_d) {
-      const Real tail = (1 - pr.t0) * (1 + pr.creep) * boost::math::expint(1, w_max) / 2;
-      for (int j = 0; j < rows; ++j) sys.displacement(j, 0) -= tail;
-    }
-  }
+  void fourier_rows(const Problem& pr, Real a, int n_terms, bool with_d, System& sys) const;
 
   /// The collocation solved at half width a: gamma_n (c_n = C1 a gamma_n / (2 pi c)), beta = b/a.
   struct Collocation {
@@ -479,179 +291,14 @@ class PlaneSubstrateSolver {
 
   /// The pressure (Q5) of a level, its peak (samples uniform in theta, x = b + a cos theta, then
   /// Brent around the best one) and its least sampled value.
-  static void pressure_of(const Problem& pr, Level& l) {
-    using std::cos;
-    const Real pi = boost::math::constants::pi<Real>();
-    const int n_terms = static_cast<int>(l.col.x.size()) - 1;
-    std::vector<Real> coeffs(static_cast<std::size_t>(n_terms));
-    for (int k = 0; k < n_terms; ++k)
-      coeffs[static_cast<std::size_t>(k)] = pr.c1 * l.a * l.col.x(k) / (2 * pi * pr.c);
-    const Real a = l.a, b = l.b;
-    l.pressure = [coeffs, a, b](Real x) {
-      const Real t = (x - b) / a;
-      if (!(t > -1 && t < 1)) return Real(0);
-      Real u_prev = 0, u = 1, sum = 0;  // (Q5): U_{-1} = 0, U_0 = 1
-      for (const Real c : coeffs) {
-        sum += c * u;
-        const Real next = 2 * t * u - u_prev;
-        u_prev = u;
-        u = next;
-      }
-      using std::sqrt;
-      return sqrt((1 - t) * (1 + t)) * sum;
-    };
-    const int samples = 8 * n_terms + 64;
-    const auto p_theta = [&](Real theta) { return l.pressure(b + a * cos(theta)); };
-    int best = 0;
-    Real best_p = -std::numeric_limits<Real>::infinity();
-    l.lowest = std::numeric_limits<Real>::infinity();
-    for (int k = 0; k < samples; ++k) {
-      const Real p = p_theta((Real(k) + Real(0.5)) * pi / Real(samples));
-      if (p > best_p) {
-        best_p = p;
-        best = k;
-      }
-      l.lowest = std::min(l.lowest, p);
-    }
-    const Real t_lo = Real(std::max(0, best - 1)) * pi / Real(samples);
-    const Real t_hi = Real(std::min(samples, best + 2)) * pi / Real(samples);
-    const auto brent = boost::math::tools::brent_find_minima(
-        [&](Real theta) { return -p_theta(theta); }, t_lo, t_hi, std::numeric_limits<Real>::digits);
-    l.peak = PressurePeak<Real>{b + a * cos(brent.first), -brent.second};
-  }
+  static void pressure_of(const Problem& pr, Level& l);
 
   /// (Q8): the load C1 a^2 gamma_0(a) / (4 c) = W, by TOMS 748 on a; bracketed around `guess`.
-  Level level(const Problem& pr, int n_terms, Real guess, Real spread) const {
-    Level out;
-    const auto load_gap = [&](Real a) {
-      ++out.evaluations;
-      const auto col = collocate(pr, a, n_terms, false);
-      return pr.c1 * a * a * col.x(0) / (4 * pr.c * pr.load) - 1;
-    };
-    Real lo = guess / (1 + spread), hi = guess * (1 + spread);
-    Real g_lo = load_gap(lo), g_hi = load_gap(hi);
-    for (int k = 0; k < 60 && !(g_lo <= 0 && g_hi >= 0); ++k) {
-      if (g_lo > 0) {
-        hi = lo;
-        g_hi = g_lo;
-        lo /= 2;
-        g_lo = load_gap(lo);
-      } else {
-        lo = hi;
-        g_lo = g_hi;
-        hi *= 2;
-        g_hi = load_gap(hi);
-      }
-    }
-    Real a = hi;
-    out.root_ok = false;
-    if (g_lo <= 0 && g_hi >= 0) {
-      if (g_lo == 0 || g_hi == 0) {
-        a = g_lo == 0 ? lo : hi;
-        out.root_ok = true;
-      } else {
-        std::uintmax_t iterations = static_cast<std::uintmax_t>(options_.max_iterations);
-        const auto r = boost::math::tools::toms748_solve(
-            load_gap, lo, hi, g_lo, g_hi,
-            boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3),
-            iterations);
-        a = (r.first + r.second) / 2;
-        out.root_ok = iterations < static_cast<std::uintmax_t>(options_.max_iterations);
-      }
-    }
-    out.a = a;
-    out.col = collocate(pr, a, n_terms, true);
-    const Vector& x = out.col.x;
-    out.b = x(n_terms) * a;
-    out.chi = pr.c1 * (out.b + a * x(1) / (2 * x(0)));  // Eq. (51) with (Q5)
-    // (Q9): d = u(x_j) + C1 x_j^2 / 2, averaged over the collocation points.
-    const Vector u = -pr.c1 * a * a * (out.col.sys.displacement * x.head(n_terms));
-    Real d = 0;
-    for (int j = 0; j <= n_terms; ++j) {
-      const Real xj = out.b + a * out.col.sys.s[static_cast<std::size_t>(j)];
-      d += u(j) + pr.c1 * xj * xj / 2;
-    }
-    out.d = d / Real(n_terms + 1);
-    pressure_of(pr, out);
-    return out;
-  }
+  Level level(const Problem& pr, int n_terms, Real guess, Real spread) const;
 
-  Solution solve_body(const Problem& pr) const {
-    using std::abs;
-    using std::max;
-    using std::sqrt;
-    const Real tol = Real(options_.tolerance);
-    Solution s;
-    s.d_absolute = Body::kind == SubstrateKind::body && pr.t0 == 0;
-    std::vector<Level> levels;
-    // The first bracket starts at the half space's width or, on a thin body, at 4 thicknesses
-    // (the Fourier rows cost in proportion to a / thickness; the search doubles from there).
-    Real guess = std::min(pr.a0 / sqrt(sqrt(1 + pr.creep)), 4 * pr.omega_scale);
-    // [guess / (1 + spread), guess (1 + spread)]: first the glassy to long-term range.
-    Real spread = sqrt(1 + pr.creep) - 1 + Real(1) / 64;
-    int n = options_.initial_terms;
-    bool met = false;
-    for (; n <= options_.max_terms; n *= 2) {
-      levels.push_back(level(pr, n, guess, spread));
-      s.iterations += levels.back().evaluations;
-      guess = levels.back().a;
-      // The next bracket: four times the last change of a (at least 1e-12 of it).
-      spread =
-          levels.size() < 2
-              ? Real(1) / 256
-              : std::max(Real(4) * abs(guess - levels[levels.size() - 2].a) / guess, Real(1e-12));
-      if (levels.size() < 2) continue;
-      const Level& now = levels.back();
-      const Level& before = levels[levels.size() - 2];
-      // (Q13) = theory.md (E2), (E3): (5/4) of the last change, or of half the change before it
-      // when that is larger (either can be small by coincidence, never both).
-      const Level* earlier = levels.size() >= 3 ? &levels[levels.size() - 3] : nullptr;
-      const auto estimate = [&](auto member) {
-        Real e = abs(member(now) - member(before));
-        if (earlier) e = max(e, abs(member(before) - member(*earlier)) / 2);
-        return Real(5) / 4 * e;
-      };
-      s.error_a = estimate([](const Level& l) { return l.a; });
-      s.error_d = estimate([](const Level& l) { return l.d; });
-      s.error_chi = estimate([](const Level& l) { return l.chi; });
-      s.error_peak = estimate([](const Level& l) { return l.peak.pressure; });
-      const Real d_scale = max(abs(now.d), pr.c1 * now.a * now.a / 2);
-      const Real chi_scale = max(abs(now.chi), Real(1e-6) * pr.c1 * now.a);
-      if (s.error_a <= tol * now.a && s.error_d <= tol * d_scale &&
-          s.error_chi <= tol * chi_scale) {
-        met = true;
-        break;
-      }
-    }
-    const Level& last = levels.back();
-    s.a = last.a;
-    s.b = last.b;
-    s.d = last.d;
-    s.chi = last.chi;
-    s.terms = static_cast<int>(last.col.x.size()) - 1;
-    s.load_residual = abs(pr.c1 * s.a * s.a * last.col.x(0) / (4 * pr.c * pr.load) - 1);
-    s.pressure_function = last.pressure;
-    s.peak_ = last.peak;
-    const Real lowest = last.lowest;
-    // Converged: every level's root, the tolerance (Q13), and a pressure that is nowhere
-    // negative beyond the tolerance (else the contact is not one interval with square-root edges).
-    bool roots = true;
-    for (const auto& l : levels) roots = roots && l.root_ok;
-    s.converged = met && roots && lowest >= -tol * s.peak_.pressure;
-    if (!roots)
-      set_stop(s, StopCode::root_finder_failed,
-               "the root finder for the half width a did not converge");
-    else if (!met)
-      set_stop(s, StopCode::tolerance_not_met,
-               "the estimated errors (a " + detail::format_value(s.error_a) + ", d " +
-                   detail::format_value(s.error_d) + ", chi " + detail::format_value(s.error_chi) +
-                   ") exceed the tolerance at max_terms = " + std::to_string(options_.max_terms));
-    else if (!s.converged)
-      set_stop(s, StopCode::not_a_contact,
-               "the pressure is negative (" + detail::format_value(lowest) +
-                   "): the contact is not one interval with square-root edges");
-    return s;
-  }
+  /// A body (SubstrateKind::half_space or ::body): the levels of N = initial_terms, 2
+  /// initial_terms, ... terms until the estimates (Q13) meet the tolerance.
+  Solution solve_body(const Problem& pr) const;
 
   // ----- a spring bed: closed form of the memory ODEs ---------------------------------------
 
@@ -688,39 +335,8 @@ class PlaneSubstrateSolver {
     }
   };
 
-  BedModes bed_modes(const Problem& pr) const {
-    const Real pi = boost::math::constants::pi<Real>();
-    BedModes modes;
-    // (Q10): T(q) = q l, so K = pi l delta(x) and u = 2 pi c l p.
-    const Real h = body_.thickness();
-    const Real l = body_.surface_factor(1 / h, pr.nu) * h;
-    detail::require(l > 0 && l < std::numeric_limits<Real>::infinity(), "surface_factor(q)/q", l,
-                    "0 < T(q)/q < inf for a local substrate");
-    modes.kappa = 2 * pi * pr.c * l;
-    modes.c1 = pr.c1;
-    modes.creep = pr.creep;
-    const int k_count = static_cast<int>(pr.terms.size());
-    if (k_count == 0) return modes;
-    Matrix m(k_count, k_count);
-    Vector u(k_count), x(k_count);
-    for (int k = 0; k < k_count; ++k) {
-      const auto& t = pr.terms[static_cast<std::size_t>(k)];
-      modes.f.push_back(t.f);
-      using std::sqrt;
-      u(k) = sqrt(t.f / t.length);
-      x(k) = sqrt(t.f * t.length);
-    }
-    m = u * u.transpose();
-    for (int k = 0; k < k_count; ++k) m(k, k) += 1 / pr.terms[static_cast<std::size_t>(k)].length;
-    const Eigen::SelfAdjointEigenSolver<Matrix> eig(m);
-    modes.lambda = eig.eigenvalues();
-    modes.back = x.cwiseInverse().asDiagonal() * eig.eigenvectors();
-    Vector rho(k_count);
-    for (int k = 0; k < k_count; ++k)
-      rho(k) = x(k) / (modes.kappa * pr.terms[static_cast<std::size_t>(k)].length);
-    modes.sigma = eig.eigenvectors().transpose() * rho;
-    return modes;
-  }
+  /// (Q10)-(Q11): the spring bed's modes, from the eigenvectors of M = L^-1 + u u^T.
+  BedModes bed_modes(const Problem& pr) const;
 
   /// Integrals over the contact [x1, x2] of p(x) and x p(x): Gauss-Legendre panels graded
   /// geometrically towards x2 (the memory's boundary layer, of width 1/lambda_max), `refine`
@@ -741,106 +357,9 @@ class PlaneSubstrateSolver {
     }
   }
 
-  Solution solve_bed(const Problem& pr) const {
-    using std::abs;
-    using std::cbrt;
-    const BedModes modes = bed_modes(pr);
-    Solution s;
-    s.d_absolute = true;
-    int evaluations = 0;
-    // (Q12): the trailing edge x1 < x2 is the first zero of p behind x2, bracketed by steps.
-    const auto trailing = [&](Real x2) {
-      const Real step = x2 / 128;
-      Real hi = x2 - step / 1024, p_hi = modes.pressure(hi, x2);
-      for (int k = 0; k < 1 << 16; ++k) {
-        const Real lo = hi - step;
-        const Real p_lo = modes.pressure(lo, x2);
-        if (p_lo <= 0) {
-          if (p_lo == 0) return lo;
-          std::uintmax_t it = static_cast<std::uintmax_t>(options_.max_iterations);
-          const auto r = boost::math::tools::toms748_solve(
-              [&](Real x) { return modes.pressure(x, x2); }, lo, hi, p_lo, p_hi,
-              boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3), it);
-          return (r.first + r.second) / 2;
-        }
-        hi = lo;
-        p_hi = p_lo;
-      }
-      return hi;
-    };
-    const auto moments = [&](Real x1, Real x2, int refine) {
-      std::array<Real, 2> out{};
-      bed_quadrature(modes, x1, x2, refine, [&](Real x, Real w) {
-        const Real p = modes.pressure(x, x2);
-        out[0] += w * p;
-        out[1] += w * x * p;
-      });
-      return out;
-    };
-    const auto load_gap = [&](Real x2) {
-      ++evaluations;
-      return moments(trailing(x2), x2, 0)[0] / pr.load - 1;
-    };
-    // Bracket: the glassy and the long-term static leading edges, (3 W kappa (1+f) / (2 C1))^(1/3).
-    Real lo = cbrt(3 * pr.load * modes.kappa / (2 * pr.c1)) / 2;
-    Real hi = cbrt(3 * pr.load * modes.kappa * (1 + pr.creep) / (2 * pr.c1)) * 2;
-    Real g_lo = load_gap(lo), g_hi = load_gap(hi);
-    for (int k = 0; k < 60 && g_lo > 0; ++k) g_lo = load_gap(lo /= 2);
-    for (int k = 0; k < 60 && g_hi < 0; ++k) g_hi = load_gap(hi *= 2);
-    bool root_ok = g_lo <= 0 && g_hi >= 0;
-    Real x2 = hi;
-    if (root_ok) {
-      std::uintmax_t it = static_cast<std::uintmax_t>(options_.max_iterations);
-      const auto r = boost::math::tools::toms748_solve(
-          load_gap, lo, hi, g_lo, g_hi,
-          boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits - 3), it);
-      x2 = (r.first + r.second) / 2;
-      root_ok = it < static_cast<std::uintmax_t>(options_.max_iterations);
-    }
-    const Real x1 = trailing(x2);
-    const auto coarse = moments(x1, x2, 0), fine = moments(x1, x2, 1);
-    s.a = (x2 - x1) / 2;
-    s.b = (x2 + x1) / 2;
-    s.d = pr.c1 * x2 * x2 / 2;  // (Q12): p(x2) = 0
-    s.chi = pr.c1 * fine[1] / fine[0];
-    s.load_residual = abs(fine[0] / pr.load - 1);
-    // (Q13) for the closed form: the quadrature's change under halving its panels (rounding,
-    // some eps C1 a in chi, is not included).
-    s.error_chi = Real(5) / 4 * abs(s.chi - pr.c1 * coarse[1] / coarse[0]);
-    s.error_a = Real(5) / 4 * abs(fine[0] - coarse[0]) / pr.load * s.a;
-    s.error_d = 2 * s.error_a / s.a * s.d;
-    s.iterations = evaluations;
-    const auto m = modes;
-    s.pressure_function = [m, x1, x2](Real x) {
-      return (x > x1 && x < x2) ? std::max(Real(0), m.pressure(x, x2)) : Real(0);
-    };
-    // The peak: the best of the quadrature's nodes, then Brent around it.
-    Real best_x = s.b, best_p = -1;
-    bed_quadrature(modes, x1, x2, 1, [&](Real x, Real) {
-      const Real p = modes.pressure(x, x2);
-      if (p > best_p) {
-        best_p = p;
-        best_x = x;
-      }
-    });
-    const Real reach = (x2 - x1) / 64;
-    const auto brent = boost::math::tools::brent_find_minima(
-        [&](Real x) { return -s.pressure_function(x); }, std::max(x1, best_x - reach),
-        std::min(x2, best_x + reach), std::numeric_limits<Real>::digits / 2);
-    s.peak_ = PressurePeak<Real>{brent.first, -brent.second};
-    const Real tol = Real(options_.tolerance);
-    const bool met = s.error_a <= tol * s.a &&
-                     s.error_chi <= tol * std::max(abs(s.chi), Real(1e-6) * pr.c1 * s.a);
-    s.converged = root_ok && met;
-    if (!root_ok)
-      set_stop(s, StopCode::root_finder_failed,
-               "the root finder for the leading edge did not converge");
-    else if (!met)
-      set_stop(s, StopCode::tolerance_not_met,
-               "the quadrature's estimated errors (a " + detail::format_value(s.error_a) +
-                   ", chi " + detail::format_value(s.error_chi) + ") exceed the tolerance");
-    return s;
-  }
+  /// A spring bed (SubstrateKind::local): the leading edge x2 by TOMS 748 on the load, the
+  /// trailing edge as the first zero of p behind it (Q12), the errors (Q13).
+  Solution solve_bed(const Problem& pr) const;
 
   Material material_;
   Body body_;
@@ -856,3 +375,8 @@ PlaneSubstrateSolver(Material, Body, PlaneSubstrateOptions)
     -> PlaneSubstrateSolver<typename Material::real_type, Material, Body>;
 
 }  // namespace viscoroll
+
+// The long members of PlaneSubstrateSolver, defined out of the class: a body's collocation and
+// its levels, and the spring bed's closed form.
+#include <viscoroll/plane/detail/plane_substrate_bed.hpp>
+#include <viscoroll/plane/detail/plane_substrate_levels.hpp>

@@ -33,8 +33,11 @@ namespace viscoroll {
 /// Infinite limits are mapped to finite ones as in Boost's gauss_kronrod.
 template <RealScalar Real, unsigned Points = 31, unsigned MaxDepth = 15>
 struct AdaptiveGaussKronrod {
+  /// The scalar.
   using value_type = Real;
+  /// The Kronrod rule's points.
   static constexpr unsigned points = Points;
+  /// The largest number of bisection levels.
   static constexpr unsigned max_depth = MaxDepth;
 
   /// Relative tolerance eps^(2/3) on the Kronrod-Gauss error estimate, relative to the L1 norm

@@ -127,7 +127,9 @@ GaussLegendreRule<Real, N> compute_gauss_legendre() {
 /// Stateless, as Boost's gauss<Real, N>; satisfies QuadratureRule<GaussLegendre<Real, N>, Real>.
 template <RealScalar Real, int N>
 requires(N >= 1) struct GaussLegendre {
+  /// The scalar.
   using value_type = Real;
+  /// N, the rule's points.
   static constexpr int points = N;
 
   /// Nodes on [-1, 1], ascending.

@@ -46,18 +46,26 @@ concept RollerProfile = RealScalar<typename P::real_type> &&
 template <RealScalar Real>
 class EllipsoidProfile {
  public:
+  /// The scalar.
   using real_type = Real;
   /// Throws unless c1 > 0 and c2 > 0 (finite).
   EllipsoidProfile(Real c1, Real c2) : c1_(c1), c2_(c2) {
     detail::require_positive("c1", c1);
     detail::require_positive("c2", c2);
   }
+  /// C1 = 1/R, the curvature across the roller.
   Real c1() const { return c1_; }
+  /// C2, the curvature along the axis.
   Real c2() const { return c2_; }
+  /// h(y) = C2 y^2 / 2.
   Real drop(Real y) const { return c2_ * y * y / 2; }
+  /// h'(y) = C2 y.
   Real drop_slope(Real y) const { return c2_ * y; }
+  /// -inf: the ellipsoid has no ends.
   Real y_min() const { return -std::numeric_limits<Real>::infinity(); }
+  /// +inf: the ellipsoid has no ends.
   Real y_max() const { return std::numeric_limits<Real>::infinity(); }
+  /// Always true: h is even.
   bool symmetric() const { return true; }
 
  private:
@@ -73,6 +81,7 @@ class EllipsoidProfile {
 template <RealScalar Real>
 class CrownedCylinder {
  public:
+  /// The scalar.
   using real_type = Real;
   /// Throws unless radius > 0, flat_length >= 0, crown_radius > 0 (finite) and
   /// length > flat_length (length may be +inf).
@@ -85,11 +94,17 @@ class CrownedCylinder {
     detail::require(!(length <= flat_length) && !std::isnan(static_cast<double>(length)), "length",
                     length, "length > flat_length");
   }
+  /// C1 = 1/R.
   Real c1() const { return 1 / radius_; }
+  /// R, the roller's radius.
   Real radius() const { return radius_; }
+  /// L_f, the length of the flat (cylindrical) part.
   Real flat_length() const { return flat_; }
+  /// R_c, the radius of the crowns.
   Real crown_radius() const { return crown_; }
+  /// L, the roller's length (may be +inf).
   Real length() const { return length_; }
+  /// h(y): 0 on the flat part, R_c - sqrt(R_c^2 - s^2) on the crowns.
   Real drop(Real y) const {
     using std::abs;
     using std::sqrt;
@@ -97,6 +112,7 @@ class CrownedCylinder {
     if (s <= 0) return 0;
     return s * s / (crown_ + sqrt((crown_ - s) * (crown_ + s)));
   }
+  /// h'(y): 0 on the flat part, s / sqrt(R_c^2 - s^2) (signed as y) on the crowns.
   Real drop_slope(Real y) const {
     using std::abs;
     using std::sqrt;
@@ -105,8 +121,11 @@ class CrownedCylinder {
     const Real slope = s / sqrt((crown_ - s) * (crown_ + s));
     return y < 0 ? -slope : slope;
   }
+  /// min(L/2, L_f/2 + R_c): the roller's end or the end of the crown circle.
   Real y_max() const { return std::min(length_ / 2, flat_ / 2 + crown_); }
+  /// -y_max().
   Real y_min() const { return -y_max(); }
+  /// Always true: h is even.
   bool symmetric() const { return true; }
 
  private:
@@ -123,6 +142,7 @@ class CrownedCylinder {
 template <RealScalar Real>
 class LogarithmicCrown {
  public:
+  /// The scalar.
   using real_type = Real;
   /// Throws unless radius, length, scale > 0 (finite) and end_drop > 0 (may be +inf).
   LogarithmicCrown(Real radius, Real length, Real scale,
@@ -145,21 +165,30 @@ class LogarithmicCrown {
     const Real pi = std::acos(Real(-1));
     return 2 * load * (1 - nu * nu) / (pi * youngs_modulus * length);
   }
+  /// C1 = 1/R.
   Real c1() const { return 1 / radius_; }
+  /// L, the roller's length.
   Real length() const { return length_; }
+  /// A, the crown's scale (a length).
   Real scale() const { return scale_; }
+  /// z_m, the drop at the ends (+inf for Lundberg's profile).
   Real end_drop() const { return end_drop_; }
+  /// h(y) = -A ln(1 - k (2y/L)^2).
   Real drop(Real y) const {
     using std::log1p;
     const Real u = 2 * y / length_;
     return -scale_ * log1p(-k_ * u * u);
   }
+  /// h'(y) = 8 A k y / (L^2 (1 - k (2y/L)^2)).
   Real drop_slope(Real y) const {
     const Real u = 2 * y / length_;
     return scale_ * k_ * 2 * u * (2 / length_) / (1 - k_ * u * u);
   }
+  /// L/2.
   Real y_max() const { return length_ / 2; }
+  /// -L/2.
   Real y_min() const { return -length_ / 2; }
+  /// Always true: h is even.
   bool symmetric() const { return true; }
 
  private:
@@ -172,6 +201,7 @@ class LogarithmicCrown {
 template <RealScalar Real>
 class TabulatedProfile {
  public:
+  /// The scalar.
   using real_type = Real;
   /// Throws unless radius > 0, y and h have the same size >= 4, y strictly increasing and
   /// every value finite (named "y[3]", "h[0]").
@@ -183,13 +213,21 @@ class TabulatedProfile {
         spline_(checked(y_, h_.size()), std::vector<Real>(h_)) {
     detail::require_positive("radius", radius);
   }
+  /// C1 = 1/R.
   Real c1() const { return 1 / radius_; }
+  /// h(y), the spline through the table.
   Real drop(Real y) const { return spline_(y); }
+  /// h'(y), the spline's slope.
   Real drop_slope(Real y) const { return spline_.prime(y); }
+  /// The table's first point y_0.
   Real y_min() const { return y_.front(); }
+  /// The table's last point.
   Real y_max() const { return y_.back(); }
+  /// Whether the table is mirror-symmetric: y_i = -y_(n-1-i) and h_i = h_(n-1-i).
   bool symmetric() const { return symmetric_; }
+  /// The tabulated points y_i.
   const std::vector<Real>& y() const { return y_; }
+  /// The tabulated drops h_i.
   const std::vector<Real>& h() const { return h_; }
 
  private:
@@ -224,6 +262,7 @@ class TabulatedProfile {
 template <RollerProfile Base>
 class Tilted {
  public:
+  /// The base profile's scalar.
   using real_type = typename Base::real_type;
   /// Throws unless |theta| < 0.1 rad (the small-slope theory: the roller's axis stays nearly
   /// parallel to the surface) and finite.
@@ -231,13 +270,21 @@ class Tilted {
     using std::abs;
     detail::require(abs(theta) < real_type(0.1), "tilt", theta, "|tilt| < 0.1 rad");
   }
+  /// The aligned profile.
   const Base& base() const { return base_; }
+  /// theta (rad).
   real_type tilt() const { return theta_; }
+  /// The base's C1.
   real_type c1() const { return base_.c1(); }
+  /// base.h(y) + theta y.
   real_type drop(real_type y) const { return base_.drop(y) + theta_ * y; }
+  /// base.h'(y) + theta.
   real_type drop_slope(real_type y) const { return base_.drop_slope(y) + theta_; }
+  /// The base's y_min().
   real_type y_min() const { return base_.y_min(); }
+  /// The base's y_max().
   real_type y_max() const { return base_.y_max(); }
+  /// True only untilted (theta = 0) on a symmetric base.
   bool symmetric() const { return theta_ == 0 && base_.symmetric(); }
 
  private:
@@ -253,7 +300,9 @@ class Tilted {
 template <RealScalar Real>
 class ProfileView {
  public:
+  /// The scalar.
   using real_type = Real;
+  /// A view of profile, which must outlive the view.
   template <RollerProfile P>
   requires(std::same_as<typename P::real_type, Real> &&
            !std::same_as<P, ProfileView>) explicit ProfileView(const P& profile)
@@ -265,11 +314,17 @@ class ProfileView {
         y_min_(profile.y_min()),
         y_max_(profile.y_max()),
         symmetric_(profile.symmetric()) {}
+  /// The profile's C1.
   Real c1() const { return c1_; }
+  /// The profile's h(y).
   Real drop(Real y) const { return drop_(profile_, y); }
+  /// The profile's h'(y).
   Real drop_slope(Real y) const { return slope_(profile_, y); }
+  /// The profile's y_min().
   Real y_min() const { return y_min_; }
+  /// The profile's y_max().
   Real y_max() const { return y_max_; }
+  /// The profile's symmetric().
   bool symmetric() const { return symmetric_; }
 
  private:

@@ -14,9 +14,13 @@ namespace viscoroll {
 /// The homogeneous viscoelastic half space of the paper: T(q) = 1.
 template <RealScalar Real>
 struct HalfSpace {
+  /// The scalar.
   using real_type = Real;
+  /// A half space.
   static constexpr SubstrateKind kind = SubstrateKind::half_space;
+  /// T(q) = 1 at every wavenumber q and Poisson's ratio nu.
   Real surface_factor(Real /*q*/, Real /*nu*/) const { return Real(1); }
+  /// +inf: no base.
   Real thickness() const { return std::numeric_limits<Real>::infinity(); }
 };
 
@@ -26,7 +30,9 @@ struct HalfSpace {
 template <RealScalar Real>
 class Layer {
  public:
+  /// The scalar.
   using real_type = Real;
+  /// A body: T(q) tends to 1 as q -> inf.
   static constexpr SubstrateKind kind = SubstrateKind::body;
 
   /// Throws std::invalid_argument naming "thickness" unless 0 < thickness < inf.
@@ -35,8 +41,11 @@ class Layer {
                     thickness, "0 < thickness < inf");
   }
 
+  /// T(q h) of (H2) (bonded) or (H3) (frictionless) at wavenumber q and Poisson's ratio nu.
   Real surface_factor(Real q, Real nu) const { return layer_factor(q * h_, nu, base_); }
+  /// h, the layer's thickness.
   Real thickness() const { return h_; }
+  /// How the layer rests on its base.
   LayerBase base() const { return base_; }
 
  private:
@@ -50,7 +59,9 @@ class Layer {
 template <RealScalar Real>
 class SpringBed {
  public:
+  /// The scalar.
   using real_type = Real;
+  /// Local: each point sinks under its own pressure only.
   static constexpr SubstrateKind kind = SubstrateKind::local;
 
   /// Throws std::invalid_argument naming "thickness" unless 0 < thickness < inf.
@@ -59,10 +70,12 @@ class SpringBed {
                     thickness, "0 < thickness < inf");
   }
 
+  /// T(q) = q h / (2 (1 - nu^2)) (H6); throws unless -1 < nu < 1.
   Real surface_factor(Real q, Real nu) const {
     detail::require(nu > -1 && nu < 1, "nu", nu, "-1 < nu < 1 for a spring bed");
     return q * h_ / (2 * (1 - nu * nu));
   }
+  /// h, the cover's thickness.
   Real thickness() const { return h_; }
 
  private:
