@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The library's boundary-element solver timed against a plain NumPy implementation of the same
-BEM, side by side in one run (issue 22, item 4; docs/performance.md, "The BEM against a NumPy
+BEM, side by side in one run (docs/performance.md, "The BEM against a NumPy
 peer").
 
 The peer is written from docs/bem.md, not from the C++: Love's rectangles (B1) in closed form,

@@ -1,7 +1,7 @@
 // The boundary-element solver on the paper's scene (f = 9, 5:1, line-contact a0 = 1) at
 // V tau / a0 = 1: one complete solve (influence table, its transform, active-set iteration) per
 // grid N (elements per semi-axis of the static Hertz ellipse) and thread count of the table.
-// Targets (issue 22): on one core N = 16 under 40 ms, N = 32 under 0.2 s, N = 64 under 1 s; the
+// Targets: on one core N = 16 under 40 ms, N = 32 under 0.2 s, N = 64 under 1 s; the
 // 1,000,000-cell grid (N = 312) under 60 s with threads. Counters: d, chi, a(0), active-set and
 // GMRES iterations, the solver's set-up and iteration seconds. The environment variable
 // VISCOROLL_BEM_COARSE sets BemOptions::coarse_tolerance (0: every active set solved to the
@@ -23,14 +23,14 @@
 // Regime 4 is a spectrum of 20 terms (PronyCreep, f_k = 0.5, tau_k log-spaced 1e-3 .. 1e3, the
 // twenty-term material of plane_vs_bem_spectrum.cpp) at V = a0/tau for the spectrum's geometric
 // middle, V tau_k / a0 = 1e-3 .. 1e3, on the same grid as the standard linear solid (the paper's
-// load 5/(3 (1 + f) c) makes it independent of f): issue 20's target, the 20-term table within
+// load 5/(3 (1 + f) c) makes it independent of f): the target: the 20-term table within
 // 5 times the one-term table (regime 2), at N = 16 and 32.
 //
 // BM_bem_crowned_roller: one complete solve of examples/scenes/crowned_roller.json (a cylinder
 // of radius 50 mm, 50 mm flat, 50 mm crowns, 80 mm long; the standard linear solid mu_d = 2 MPa,
 // f = 4, tau = 5 ms; 100 N) through bem_scene(profile, ...), at 0.1 and 1 m/s and N = 16, 24, 32
 // on one thread: the grid study of docs/rollers.md converges d, chi and the edge-peak ratio to
-// 0.2% from N = 24 (issue 21). Counters: d, chi, the largest load per unit length f0_max and its
+// 0.2% from N = 24. Counters: d, chi, the largest load per unit length f0_max and its
 // ratio to F0(0).
 #include <benchmark/benchmark.h>
 

@@ -1,11 +1,11 @@
-// "Only what a scene needs" (issue 5): one plane solve and one line solve of the paper's scene
-// (f = 9; line: 5:1 static contact, C2/C1 = (ln 20 - 1)/25; a0 = 1) for an elastic material and
-// for the standard linear solid at V tau = 0, at V tau / a0 = 1 and at V tau / a0 = 1e20 (glassy).
-// The elastic, static and glassy scenes are closed forms (Hertz, docs/theory.md (P6), for the
-// plane; Kalker's static line contact, Eqs. (33), (34), (47), (48) at V tau = 0, for the line)
-// with no Bessel, Struve or exponential work; V tau / a0 = 1 solves (P5) with the Bessel ratios
-// of (36)-(37) (plane) or the Levenberg-Marquardt iteration on (34), (L6), (47) (line). Label:
-// the path the solver reported; counters: root-finder / Levenberg-Marquardt iterations.
+// "Only what a scene needs" (docs/performance.md): one plane solve and one line solve of the
+// paper's scene (f = 9; line: 5:1 static contact, C2/C1 = (ln 20 - 1)/25; a0 = 1) for an elastic
+// material and for the standard linear solid at V tau = 0, at V tau / a0 = 1 and at V tau / a0 =
+// 1e20 (glassy). The elastic, static and glassy scenes are closed forms (Hertz, docs/theory.md
+// (P6), for the plane; Kalker's static line contact, Eqs. (33), (34), (47), (48) at V tau = 0, for
+// the line) with no Bessel, Struve or exponential work; V tau / a0 = 1 solves (P5) with the Bessel
+// ratios of (36)-(37) (plane) or the Levenberg-Marquardt iteration on (34), (L6), (47) (line).
+// Label: the path the solver reported; counters: root-finder / Levenberg-Marquardt iterations.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// A conveyor belt's indentation rolling resistance at one idler (docs/rollers.md, "The conveyor
-// idler"): a rigid steel idler roll pressing the belt's bottom cover, a rubber layer bonded to the
+// A conveyor belt's indentation rolling resistance at one idler (docs/rollers.md, "Example: a
+// conveyor idler on a belt cover"): a rigid steel idler roll pressing the belt's bottom cover, a rubber layer bonded to the
 // belt's stiff carcass, solved three ways:
 //   layer       the exact cover: a bonded layer of the rubber (docs/plane-substrate.md);
 //   spring bed  the conveyor industry's Winkler model, u = h p / E (E = 2 (1 + nu) mu);

@@ -1,4 +1,4 @@
-// A crowned roller on a rubber of many relaxation times (issue 21, docs/rollers.md): the exact
+// A crowned roller on a rubber of many relaxation times (docs/rollers.md): the exact
 // 3-D contact (BemSolver over PronyRelaxation, the grid sized by bem_scene's (B14)) of a steel
 // cylinder of radius 50 mm and length 80 mm whose middle 50 mm are flat and whose ends drop away
 // in circular crowns, pressed with 100 N onto the 12-term rubber of

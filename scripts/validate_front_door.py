@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""The default front door against a fine-grid BEM on scenes the project has not seen (issue 38).
+"""The default front door against a fine-grid BEM on scenes the project has not seen.
 
 Generates seeded random scenes (rigid rollers on Prony rubbers with a WLF shift), solves each
 with `viscoroll-solve --scene FILE` with no "method" key (the auto method: line where its theory
 applies, else the bem at its default tolerance of 1% in d and chi) and with the reference
 `--method bem --tolerance 0.002`, and reports how often the front door's d and chi are within 1%
-of the reference (issue 38's "Done when": at least 95% of scenes), which results miss and whether
+of the reference (the aim: at least 95% of scenes), which results miss and whether
 each says so (a warning, tolerance_met false, converged false), which method answered, and the run
 times. One process at a time, `--threads 1` (the times are one core's).
 
@@ -70,7 +70,7 @@ import sys
 import time
 
 WLF_C1, WLF_C2, T_REF = 8.86, 101.6, 20.0
-TOLERANCE_FRONT = 0.01  # issue 38: within 1% in d and chi
+TOLERANCE_FRONT = 0.01  # the front door's accuracy: within 1% in d and chi
 TOLERANCE_REF = 0.002
 
 

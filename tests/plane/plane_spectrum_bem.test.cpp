@@ -23,7 +23,7 @@ using viscoroll::PronyTerm;
 /// BEM's discretisation error at N = 16, which bounds the comparison: the edges a fraction of a
 /// cell (hx/4 for Hertz, docs/bem.md B13; measured up to 0.25 hx for these rolling contacts over
 /// N = 8 ... 32, so 0.3 hx) and the row's chi to 1.5% (measured 0.1 ... 1.25% at N = 16, falling
-/// to 0.04 ... 1.0% at N = 32: docs/validation.md, `plane_vs_bem_spectrum`).
+/// to 0.04 ... 1.0% at N = 32: docs/validation.md, "Plane solver for a spectrum", `plane_vs_bem_spectrum`).
 void check_long_roller(const PronyCreep<double>& m, double speed) {
   viscoroll::BemOptions options;
   options.grid = 16;

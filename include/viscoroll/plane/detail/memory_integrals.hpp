@@ -1,5 +1,5 @@
 // viscoroll: the memory integrals of the plane problem's Chebyshev collocation
-// (docs/hunter-collocation.md, section 4; docs/plane-substrate.md (Q6)): the integrals of the
+// (docs/hunter-collocation.md, section 3; docs/plane-substrate.md (Q6)): the integrals of the
 // memory weight e^-eta against the Chebyshev kernels H_n, by composite 30-point Gauss-Legendre
 // panels each spanning a bounded decay and phase. Used by PlaneSubstrateSolver
 // (plane/plane_substrate_solver.hpp) and by the independent collocation of the tests
