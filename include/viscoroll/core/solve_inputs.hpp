@@ -1,7 +1,7 @@
 // viscoroll: the prologue every solve shares (the plane, line and boundary-element solvers): the
 // scene validated, the material's instantaneous compliance c = (1 - nu)/(2 pi mu_D) (Eq. 3)
 // checked representable, and the words that name the solve's inputs in its later errors
-// (docs/errors.md, "Results that leave the range"), built only when an error needs them.
+// (docs/errors.md, "std::invalid_argument: bad input"), built only when an error needs them.
 #pragma once
 
 #include <cstddef>
