@@ -35,7 +35,7 @@ void BM_line_spectrum(benchmark::State& state) {
   const viscoroll::LineSolver<double, viscoroll::PronyCreep<double>> solver(
       material(static_cast<int>(state.range(0))), options);
   const double speed = static_cast<double>(state.range(2)) / 10;
-  viscoroll::LineSpectrumSolution<double, viscoroll::GaussLegendre<double, 12>> s;
+  viscoroll::LineSolution<double, viscoroll::GaussLegendre<double, 12>> s;
   for (auto _ : state) {
     s = solver.solve({.c1 = 1.0, .c2 = (std::log(20.0) - 1) / 25, .load = 1.0, .speed = speed});
     benchmark::DoNotOptimize(s);  // the whole solution: a double alone may go through a register

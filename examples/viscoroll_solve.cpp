@@ -927,12 +927,12 @@ int run_plane(const Problem& p, Output& out) {
         [&](double temperature) { return viscoroll::PlaneSolver(prony_at(p, temperature)); },
         [&](double temperature, const auto& scene, const auto& s, double seconds) {
           const double a_t = p.shift ? viscoroll::shift_factor(*p.shift, temperature) : 1.0;
-          out.add(
-              with_fields({{"method", std::string("plane")},
-                           {"temperature", temperature},
-                           {"a_T", a_t},
-                           {"speed", scene.speed}},
-                          viscoroll::cli::plane_fields<Record>(s, duty(p, scene.speed), seconds)));
+          out.add(with_fields(
+              {{"method", std::string("plane")},
+               {"temperature", temperature},
+               {"a_T", a_t},
+               {"speed", scene.speed}},
+              viscoroll::cli::plane_fields<Record>(s, duty(p, scene.speed), seconds, true)));
           if (!s.converged)
             out.note("viscoroll-solve: plane solution for " +
                      temperature_label(p, temperature, scene.speed) + " did not converge");
@@ -944,12 +944,12 @@ int run_plane(const Problem& p, Output& out) {
       },
       [&](double tau) { return viscoroll::PlaneSolverD(material(p, tau)); },
       [&](double tau, const auto& scene, const auto& s, double seconds) {
-        out.add(
-            with_fields({{"method", std::string("plane")},
-                         {"tau", tau},
-                         {"speed", scene.speed},
-                         {"vtau", scene.speed * tau}},
-                        viscoroll::cli::plane_fields<Record>(s, duty(p, scene.speed), seconds)));
+        out.add(with_fields(
+            {{"method", std::string("plane")},
+             {"tau", tau},
+             {"speed", scene.speed},
+             {"vtau", scene.speed * tau}},
+            viscoroll::cli::plane_fields<Record>(s, duty(p, scene.speed), seconds, false)));
         if (!s.converged)
           out.note("viscoroll-solve: plane solution for " + label(p, tau, scene.speed) +
                    " did not converge");

@@ -11,20 +11,20 @@
 
 namespace viscoroll::cli {
 
-/// The fields of a plane solution `s` (PlaneSolution, or PlaneSpectrumSolution with its
-/// active_terms and spectrum_error) after the record's head (method, the material's keys, speed):
+/// The fields of a plane solution `s` (with its active_terms and spectrum_error where `spectrum`,
+/// a Prony material's record) after the record's head (method, the material's keys, speed):
 /// a0, b0, the static long-term half width, chi with its engineering_fields for `duty` (per unit
 /// length), the peak pressure, then the iteration's fields. `Record` is a sequence of (key, value)
 /// fields built from braces.
 template <class Record, class Solution>
-Record plane_fields(const Solution& s, const Duty& duty, double seconds) {
+Record plane_fields(const Solution& s, const Duty& duty, double seconds, bool spectrum) {
   const auto peak = s.peak();
   Record out = {{"a0", s.a}, {"b0", s.b}, {"a_long_term", s.a_long_term}, {"chi", s.chi}};
   const Record cost = engineering_fields<Record>(s.chi, duty);
   out.insert(out.end(), cost.begin(), cost.end());
   out.push_back({"pmax", peak.pressure});
   out.push_back({"pmax_x", peak.x});
-  if constexpr (requires { s.active_terms; }) {
+  if (spectrum) {
     out.push_back({"active_terms", static_cast<long long>(s.active_terms)});
     out.push_back({"spectrum_error", s.spectrum_error});
   }

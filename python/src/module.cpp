@@ -79,15 +79,15 @@ namespace {
 using PlaneSpectrumSolver = viscoroll::PlaneSolver<double, PronyRelaxation<double>>;
 using PlaneSolver = PlaneSolverD;
 
-/// A plane solution of either material (PlaneSolution, PlaneSpectrumSolution: the same fields,
-/// the spectrum's with active_terms).
+/// A plane solution of either material (a PlaneSolution; a spectrum's record with active_terms
+/// and spectrum_error).
 template <class Solution>
 class PlaneSolved final : public Solved {
  public:
-  PlaneSolved(Solution s, const RecordKeys& keys, double speed, double seconds)
+  PlaneSolved(Solution s, const RecordKeys& keys, double speed, double seconds, bool spectrum)
       : Solved(Method::plane), s_(std::move(s)) {
-    record_ =
-        joined(keys.head("plane", speed), cli::plane_fields<Record>(s_, keys.duty(speed), seconds));
+    record_ = joined(keys.head("plane", speed),
+                     cli::plane_fields<Record>(s_, keys.duty(speed), seconds, spectrum));
   }
   double pressure(double x, double) const override { return s_.pressure(x); }
   double a(double) const override { return s_.a; }
@@ -97,6 +97,11 @@ class PlaneSolved final : public Solved {
  private:
   Solution s_;
 };
+
+/// The solver's material has a spectrum (its record carries active_terms and spectrum_error).
+template <class Solver>
+constexpr bool spectrum_solver =
+    !viscoroll::SingleTimeModel<std::remove_cvref_t<decltype(std::declval<Solver>().material())>>;
 
 PlaneScene<double> plane_scene(const SceneSpec& scene, double speed) {
   PlaneScene<double> s{.c1 = scene.roller.c1, .load = scene.load, .speed = speed};
@@ -111,7 +116,7 @@ SolvedPtr solve_plane_with(const Solver& solver, const SceneSpec& scene, double 
   auto s = solver.solve(at);
   const double seconds = seconds_since(t0);
   return std::make_shared<PlaneSolved<typename Solver::Solution>>(
-      std::move(s), RecordKeys::of(scene), speed, seconds);
+      std::move(s), RecordKeys::of(scene), speed, seconds, spectrum_solver<Solver>);
 }
 
 template <class Solver>
@@ -125,7 +130,8 @@ std::vector<SolvedPtr> sweep_plane_with(const Solver& solver, const SceneSpec& s
   return sweep_timed(
       solver, at, speeds,
       [keys](const Solution& s, double speed, double seconds) -> SolvedPtr {
-        return std::make_shared<PlaneSolved<Solution>>(s, keys, speed, seconds);
+        return std::make_shared<PlaneSolved<Solution>>(s, keys, speed, seconds,
+                                                       spectrum_solver<Solver>);
       },
       options);
 }

@@ -41,8 +41,9 @@ class LineSolved final : public Solved {
   Solution s_;
 };
 
-/// A Prony material's line solution: the contact's shape and moments, no pressure field
-/// (docs/line-solver.md, "Materials with a spectrum"); active_terms in place of pmax.
+/// A Prony material's line solution: the contact's shape and, with two or more active terms, its
+/// moments and no pressure field (docs/line-solver.md, "Materials with a spectrum"); active_terms
+/// in place of pmax.
 class LineSpectrumSolved final : public Solved {
  public:
   using Solution = SpectrumSolver::Solution;
@@ -57,11 +58,16 @@ class LineSpectrumSolved final : public Solved {
   }
 
   const Solution& solution() const { return s_; }
-  double pressure(double, double) const override {
-    throw std::invalid_argument(
-        "viscoroll: pressure(x, y) is not available for the line method with a Prony material "
-        "(its solution is the contact's shape and moments: a(y), b(y), f0(y); the bem method "
-        "gives the pressure)");
+  double pressure(double x, double y) const override {
+    if (!s_.has_pressure())
+      throw std::invalid_argument(
+          "viscoroll: pressure(x, y) is not available for the line method with a Prony material "
+          "whose active_terms is " +
+          std::to_string(s_.active_terms) +
+          " >= 2 at this speed "
+          "(its solution is the contact's shape and moments: a(y), b(y), f0(y); the bem method "
+          "gives the pressure)");
+    return s_.pressure(x, y);
   }
   double a(double y) const override { return s_.a(y); }
   double b(double y) const override { return s_.b(y); }

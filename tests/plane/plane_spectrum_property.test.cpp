@@ -49,7 +49,7 @@ void run(int spectra, int max_terms, int n) {
     const double a0 = std::sqrt(4 * material.long_term_compliance() * load / c1);
     const double speed = std::pow(10.0, -2 + 2 * unit(rng)) * a0 / tau_min;
     INFO("trial " << trial << ": " << m << " terms, speed " << speed << ", a0 " << a0);
-    viscoroll::PlaneSpectrumSolution<double, viscoroll::GaussLegendre<double, 24>> s{};
+    viscoroll::PlaneSolution<double, viscoroll::GaussLegendre<double, 24>> s{};
     try {
       s = viscoroll::PlaneSolver(material).solve({.c1 = c1, .load = load, .speed = speed});
     } catch (const std::invalid_argument& e) {

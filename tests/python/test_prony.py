@@ -85,6 +85,28 @@ def test_the_line_method_gives_the_shape_not_the_pressure():
     assert s["a0"][0] == r.a0  # the sweep's first speed is a cold start, as solve()
 
 
+def test_the_line_method_gives_the_pressure_where_at_most_one_term_is_active():
+    """A spectrum with its fast term relaxed (V tau_1 <= sqrt(eps) a0) has one active term and
+    the standard linear solid's strips, pressure included; with both relaxed, Hertz's:
+    p(0, 0) = C1 a0 / (2 pi c (1 + F)) with the long-term compliance c (1 + F) = (1 - nu)/(2 pi
+    g_inf), to rounding. At 1e-7 m/s the one active term moves it by O(V tau_2/a0) = 3e-7."""
+    g_inf, c1 = 2.5e6, 20.0
+    scene = vr.Scene(vr.Prony(g_inf=g_inf, nu=0.5, terms=[(3.0e7, 1e-4), (6.0e6, 1e-2)]),
+                     vr.Ellipsoid(c1=c1, c2=0.5), 100.0)
+    hertz = vr.solve(scene, method="line", speed=1e-9)
+    assert hertz.converged and hertz.active_terms == 0
+    long_term = 0.5 / (2 * math.pi * g_inf)
+    p0 = c1 * hertz.a0 / (2 * math.pi * long_term)
+    assert abs(hertz.pressure(0.0, 0.0) - p0) <= 1e-12 * p0
+    one = vr.solve(scene, method="line", speed=1e-7)
+    assert one.converged and one.active_terms == 1
+    assert abs(one.pressure(one.b0, 0.0) - p0) <= 1e-5 * p0
+    two = vr.solve(scene, method="line", speed=1e-3)
+    assert two.active_terms == 2
+    with pytest.raises(ValueError, match="active_terms is 2"):
+        two.pressure(0.0, 0.0)
+
+
 def test_the_line_method_solves_a_crowned_roller_on_a_spectrum(scenes_dir):
     """LineSolver<PronyRelaxation>::solve(LineProfileScene) from a scene file: the three terms
     active at every speed, the load's edge peak just past the flat part's ends (|y| = 25 mm)."""

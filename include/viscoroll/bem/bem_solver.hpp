@@ -44,6 +44,14 @@
 
 namespace viscoroll {
 
+namespace detail {
+/// What BemSolver asks of its arguments: a material over Real, and a nodal quadrature rule over the
+/// influence coefficients' scalar (bem::coefficient_real_t).
+template <class Real, class Material, class Quadrature>
+concept BemSolverArguments = std::same_as<typename Material::real_type, Real> &&
+    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>;
+}  // namespace detail
+
 /// Boundary-element solver over a scalar, a material (any ConstitutiveModel: Elastic,
 /// StandardLinearSolid, or a spectrum such as GeneralizedMaxwell, term by term (B10)) and the
 /// NodalQuadratureRule of the memory coefficients' panels (B4)-(B5), bem::MemoryPanelRule
@@ -56,8 +64,7 @@ namespace viscoroll {
 ///   - material(), options(): what the solver was built with.
 template <RealScalar Real, ConstitutiveModel Material,
           class Quadrature = bem::MemoryPanelRule<Real>>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 class BemSolver {
  public:
   /// The solution type.
@@ -294,8 +301,7 @@ class BemSolver {
 };
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
                                                   const Solution* start) const -> Solution {
   const Scaled u = scaled(scene);
@@ -304,8 +310,7 @@ auto BemSolver<Real, Material, Quadrature>::solve(const BemScene<Real>& scene,
 }
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::grid_for(const BemScene<Real>& scene) const
     -> BemGrid<Real> {
   const Scaled u = scaled(scene);
@@ -317,8 +322,7 @@ auto BemSolver<Real, Material, Quadrature>::grid_for(const BemScene<Real>& scene
 }
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::long_term_hertz(const BemScene<Real>& scene) const
     -> HertzContact<Real> {
   const Scaled u = scaled(scene);
@@ -351,12 +355,8 @@ BemSolver(Material, BemOptions) -> BemSolver<typename Material::real_type, Mater
 /// The common case: double precision, standard linear solid.
 using BemSolverD = BemSolver<double, StandardLinearSolid<double>>;
 
-// Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
-// viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
-// ones only), the solvers below are instantiated once in that library (src/) and
-// not in the including translation unit. Their entry points are defined out of the class (not
-// inline), so that g++ does not instantiate them here for inlining either. Other instantiations
-// are implicit, as in header-only mode.
+// Compiled mode (docs/building.md, "Compiled mode"; as PlaneSolver's in plane_solver.hpp): these
+// are instantiated once in viscoroll::compiled (or compiled_double), not here.
 #if defined(VISCOROLL_COMPILED)
 extern template class BemSolver<float, StandardLinearSolid<float>>;
 extern template class BemSolver<long double, StandardLinearSolid<long double>>;

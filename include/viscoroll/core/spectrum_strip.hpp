@@ -17,9 +17,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 #include <viscoroll/core/binary.hpp>
 #include <viscoroll/core/concepts.hpp>
@@ -311,60 +313,97 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
   return out;
 }
 
-/// Pressure on the strip of a spectrum (S9): p = sum_i A_i p_i, p_i the one-term strip of
-/// relaxation length mu_i with G = u_i and odd coefficient w_i - b, each a StripPressure.
+/// The pressure across a plane strip of any material: a weighted sum of one-term strips (S9),
+/// p = sum_i A_i p_i, p_i the one-term strip of relaxation length mu_i with G = u_i and odd
+/// coefficient w_i - b, each a StripPressure. A material with at most one memory term active
+/// has a single strip, the paper's (32), (35) (Hertz's with none): every member then is that
+/// StripPressure's, digit for digit.
 template <RealScalar Real, class Quadrature>
 requires QuadratureRule<Quadrature, Real>
-class SpectrumStripPressure {
+class PlaneStrip {
  public:
-  /// All arguments in `units` (StripUnits), as StripPressure's.
-  SpectrumStripPressure(StripUnits units, Real c1, Real a, const SpectrumStrip<Real>& strip,
-                        const SpectrumLengths<Real>& lengths, Real compliance)
-      : units_(units), a_(a), b_(strip.b), layer_(lengths.relaxation) {
+  /// No strip: pressure 0 everywhere (a default-constructed solution's; no solver returns one).
+  PlaneStrip() = default;
+  /// The strip of one memory term, or Hertz's (32), (35).
+  explicit PlaneStrip(StripPressure<Real, Quadrature> one)
+      : units_{}, a_(one.half_width()), b_(one.offset()), one_(std::move(one)) {}
+  /// The strip of a spectrum (S9), all arguments in `units` (StripUnits) as StripPressure's.
+  PlaneStrip(StripUnits units, Real c1, Real a, const SpectrumStrip<Real>& strip,
+             const SpectrumLengths<Real>& lengths, Real compliance)
+      : units_(units), a_(a), b_(strip.b), layer_(lengths.relaxation), spectrum_(true) {
     const Real creep = lengths.creep_ratio;
     for (std::size_t i = 0; i < strip.u.size(); ++i)
       terms_.emplace_back(units, c1, a, strip.b, strip.u[i], (1 + creep) * lengths.relaxation[i],
                           creep, compliance, strip.weight[i], strip.w[i]);
   }
 
-  /// a, the strip's half width (caller's units).
-  Real half_width() const { return times_power_of_two(a_, units_.length); }
-  /// b, the offset of its centre ahead of the axis.
-  Real offset() const { return times_power_of_two(b_, units_.length); }
-  /// b + a, the leading edge.
-  Real leading_edge() const { return times_power_of_two(b_ + a_, units_.length); }
-  /// b - a, the trailing edge.
-  Real trailing_edge() const { return times_power_of_two(b_ - a_, units_.length); }
+  /// One-term strips summed: 1 for the paper's strip or Hertz's, M for a spectrum's (S9).
+  std::size_t terms() const { return spectrum_ ? terms_.size() : one_ ? 1 : 0; }
+  /// The one-term strip (requires terms() == 1): the paper's (32), (35).
+  const StripPressure<Real, Quadrature>& single() const {
+    return spectrum_ ? terms_.front() : *one_;
+  }
 
-  /// (S9): the contact pressure at x (caller's units); zero outside the strip.
+  /// a, the strip's half width (caller's units).
+  Real half_width() const { return length(a_); }
+  /// b, the offset of its centre ahead of the axis.
+  Real offset() const { return length(b_); }
+  /// b + a, the leading edge.
+  Real leading_edge() const { return length(b_ + a_); }
+  /// b - a, the trailing edge.
+  Real trailing_edge() const { return length(b_ - a_); }
+
+  /// (35), (S9): the contact pressure at x (caller's units); zero outside the strip.
   Real pressure(Real x) const {
+    if (!spectrum_) return one_ ? one_->pressure(x) : Real(0);
     Real p = 0;
     for (const auto& t : terms_) p += t.pressure(x);
     return p;
   }
   /// dp/dx, the sum of the terms' slopes (each from its own Eq. (7)).
   Real pressure_slope(Real x) const {
+    if (!spectrum_) return one_ ? one_->pressure_slope(x) : Real(0);
     Real s = 0;
     for (const auto& t : terms_) s += t.pressure_slope(x);
     return s;
   }
+  /// Eq. (32): the pseudo-pressure at x, for the strip of one term (a spectrum's (S4) is not
+  /// the sum of its terms'): throws std::logic_error for a spectrum's strip.
+  Real pseudo_pressure(Real x) const {
+    if (spectrum_)
+      throw std::logic_error(
+          "viscoroll: PlaneStrip::pseudo_pressure is the one-term strip's (32); a spectrum's "
+          "strip gives pressure(x) (S9)");
+    return one_ ? one_->pseudo_pressure(x) : Real(0);
+  }
 
-  /// The largest pressure and where it sits (samples clustered at the ends and through each
-  /// relaxation layer at the leading edge, then the root of the slope).
-  PressurePeak<Real> peak() const {
+  /// The largest pressure and where it sits (a spectrum's: samples clustered at the ends and
+  /// through each relaxation layer at the leading edge, then the root of the slope).
+  PressurePeak<Real> peak() const { return peak_between(trailing_edge(), leading_edge()); }
+  /// The largest pressure on [lo, hi] (clipped to the strip) and where it sits.
+  PressurePeak<Real> peak_between(Real lo, Real hi) const {
+    if (!spectrum_) return one_ ? one_->peak_between(lo, hi) : PressurePeak<Real>{Real(0), Real(0)};
     std::vector<Real> layers;
     for (const Real l : layer_)
-      if (l < a_) layers.push_back(times_power_of_two(l, units_.length));
+      if (l < a_) layers.push_back(length(l));
+    using std::max;
+    using std::min;
     return detail::strip_peak(
-        trailing_edge(), leading_edge(), leading_edge(), layers,
+        max(lo, trailing_edge()), min(hi, leading_edge()), leading_edge(), layers,
         [this](Real x) { return pressure(x); }, [this](Real x) { return pressure_slope(x); }, true);
   }
 
  private:
-  StripUnits units_;
-  Real a_, b_;
+  /// x in the strip's units (caller's for the strip of one term, whose own converts) to the
+  /// caller's.
+  Real length(Real x) const { return spectrum_ ? times_power_of_two(x, units_.length) : x; }
+
+  StripUnits units_{};
+  Real a_{}, b_{};
   std::vector<Real> layer_;
-  std::vector<StripPressure<Real, Quadrature>> terms_;
+  std::optional<StripPressure<Real, Quadrature>> one_;  // the strip of one term (no allocation)
+  std::vector<StripPressure<Real, Quadrature>> terms_;  // a spectrum's (S9)
+  bool spectrum_ = false;
 };
 
 }  // namespace viscoroll

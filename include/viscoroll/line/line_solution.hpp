@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 #include <viscoroll/core/along_roller.hpp>
@@ -17,8 +18,43 @@
 
 namespace viscoroll {
 
-/// The line-contact solution: the contact zone, the penetration, the line functions of Section 5
-/// and the rolling friction of Section 6.
+/// The functions gamma(y) = G0/a^2 and kappa(y)/a_ref of the spectrum's line solution,
+/// Chebyshev series in u = 2 t^2 - 1, t = (y - c)/l (docs/theory.md (S14)): even, plus for an
+/// asymmetric contact the odd parts t sum gamma_odd_k T_k(u), t sum kappa_odd_k T_k(u) (as
+/// line_shape.hpp's; empty otherwise).
+template <RealScalar Real>
+struct LineSpectrumMoments {
+  /// The even Chebyshev coefficients of gamma = G0/a^2 and kappa/a_ref.
+  ///@{
+  std::vector<Real> gamma, kappa;
+  ///@}
+  /// The odd parts' coefficients (empty for a symmetric contact).
+  ///@{
+  std::vector<Real> gamma_odd{}, kappa_odd{};
+  ///@}
+  /// The even part of gamma at u.
+  Real gamma_at(Real u) const { return LineShape<Real>::chebyshev(gamma, u); }
+  /// The even part of kappa/a_ref at u.
+  Real kappa_at(Real u) const { return LineShape<Real>::chebyshev(kappa, u); }
+  /// gamma and kappa/a_ref at u with their odd parts at t.
+  Real gamma_at(Real u, Real t) const {
+    if (gamma_odd.empty()) return gamma_at(u);
+    return gamma_at(u) + t * LineShape<Real>::chebyshev(gamma_odd, u);
+  }
+  /// kappa/a_ref at u with its odd part at t.
+  Real kappa_at(Real u, Real t) const {
+    if (kappa_odd.empty()) return kappa_at(u);
+    return kappa_at(u) + t * LineShape<Real>::chebyshev(kappa_odd, u);
+  }
+};
+
+/// The line-contact solution, for any material: the contact zone, the penetration, the line
+/// functions of Section 5 and the rolling friction of Section 6. A material with one memory term
+/// active at the scene's speed (a standard linear solid, or a spectrum whose other terms are
+/// relaxed, folded into the compliance, or not started, dropped) has the paper's strips (32),
+/// (35): pressure(), strip() and q(). With two or more active terms (docs/theory.md section 14)
+/// the strips are carried by their moments gamma = G0/a^2 and kappa (S14), not by a pressure:
+/// has_pressure() is false, and pressure(), strip() and q() are not available.
 template <RealScalar Real, class Quadrature>
 struct LineSolution {
   LineShape<Real> shape;  ///< a(y), b(y), l
@@ -26,8 +62,8 @@ struct LineSolution {
   Real a_long_term;       ///< a0: half width at y = 0 of the static (V tau = 0) contact
   Real l_long_term;       ///< l0: its half length
   Real d_long_term;       ///< its penetration
-  Real chi;               ///< rolling-friction coefficient, Eq. (54) in the form of section 4
-  bool converged;         ///< the iteration met its tolerance (always true for a closed form)
+  Real chi;        ///< rolling-friction coefficient, Eq. (54) in the form of section 4, (S15)
+  bool converged;  ///< the iteration met its tolerance (always true for a closed form)
   /// The residual vanishes (max |r| <= 64 sqrt(eps)): a root of the line equations. False with
   /// converged at a certified least-squares minimum where the equations have no root (the
   /// residual is then reported, and a warning says so).
@@ -39,11 +75,27 @@ struct LineSolution {
   std::vector<std::string> warnings;  ///< outside the line theory's domain of validity
   std::vector<WarningCode> warning_codes;  ///< the warnings' codes, index for index
 
-  /// C1, V tau, f and the instantaneous compliance (1 - nu)/(2 pi mu_D): what strip() needs.
+  /// C1, V tau, f and the instantaneous compliance (1 - nu)/(2 pi mu_D) of the one active term:
+  /// what strip() needs (V tau = f = 0 with none active or with two or more).
   ///@{
   Real c1, vtau, f, compliance;
   ///@}
+  /// gamma = G0/a^2 and kappa/a_ref with two or more active terms (S14); empty otherwise.
+  LineSpectrumMoments<Real> moments{};
+  /// Memory terms solved for at this speed: 0 for an elastic, static or glassy contact, 1 for the
+  /// paper's theory, the count after merging near-equal times for a spectrum.
+  int active_terms = 0;
+  /// Bound on the relative change of the complex compliance made by merging near-equal times
+  /// (docs/theory.md (S19), (S20)) plus the share of the terms folded into the compliance or
+  /// dropped as acting relaxed or glassy (S21), at most line_spectrum_budget(); 0 if neither
+  /// (always 0 for a material with one memory term).
+  Real spectrum_error{};
+  /// The long-term compliance of the terms solved for, c (1 + f) (Eq. 47 with (52): F0 integrates
+  /// to it times the load); f0_per_load() reads it.
+  Real load_compliance{};
 
+  /// The strips have the paper's pressure (35): at most one memory term active.
+  bool has_pressure() const { return moments.gamma.empty(); }
   /// The contact's half length l.
   Real l() const { return shape.l; }
   /// The contact's ends c - l and c + l (-l and l for a symmetric contact).
@@ -54,32 +106,42 @@ struct LineSolution {
   Real a(Real y) const { return shape.a(y); }
   /// b(y), the offset of the contact's centre ahead of the roller's axis.
   Real b(Real y) const { return shape.b(y); }
-  /// G(y) of Eq. (36); 0 for a static or elastic scene.
+  /// G(y) of Eq. (36), G0 = gamma a^2 of (S8) with two or more active terms; 0 for a static or
+  /// elastic scene.
   Real g(Real y) const { return functions(y).g; }
   /// F0(y) of Eq. (33).
   Real f0(Real y) const { return functions(y).f0; }
-  /// Q(y) of Eq. (46).
+  /// Q(y) of Eq. (46) (NaN with two or more active terms: chi is then (S15)'s).
   Real q(Real y) const { return functions(y).q; }
 
-  /// The strip at y (y_minus() < y < y_plus()): Eqs. (32), (35) across the contact.
+  /// The strip at y (y_minus() < y < y_plus()): Eqs. (32), (35) across the contact. Throws
+  /// std::logic_error where has_pressure() is false.
   StripPressure<Real, Quadrature> strip(Real y) const {
+    if (!has_pressure())
+      throw std::logic_error(
+          "viscoroll: LineSolution::strip is not available with " + std::to_string(active_terms) +
+          " active memory terms (the line theory of a spectrum carries the strips by their "
+          "moments, docs/theory.md (S14); the bem method gives the pressure)");
     const auto s = functions(y);
     return StripPressure<Real, Quadrature>(c1, s.a, s.b, s.g, vtau, f, compliance);
   }
-  /// p(x, y), Eq. (35); zero outside the contact.
+  /// p(x, y), Eq. (35); zero outside the contact. Throws std::logic_error where has_pressure() is
+  /// false (strip).
   Real pressure(Real x, Real y) const {
     using std::abs;
     if (!(abs(y - shape.centre) < shape.l)) return Real(0);
     return strip(y).pressure(x);
   }
 
-  /// F0(y) per unit load per length, the long-term compliance (1 + f) c (Eq. 47 with (52)).
-  Real f0_per_load() const { return compliance * (1 + f); }
+  /// F0(y) per unit load per length, the long-term compliance of the terms solved for,
+  /// (1 + f) c for one term (Eq. 47 with (52)).
+  Real f0_per_load() const { return load_compliance; }
 
   /// The contact along the roller at `stations` evenly spaced points inside (y_minus, y_plus)
-  /// (>= 1): the load per unit length F0(y)/((1 + f) c) (Eq. 33 with (47): the strip's
+  /// (>= 1): the load per unit length F0(y)/f0_per_load() (Eq. 33 with (47): the strip's
   /// pseudo-pressure integrates to (1 + f) c times its load), a(y), b(y), the strip's peak
-  /// pressure (Eq. 35), the ends and the peak of the load (docs/rollers.md).
+  /// pressure (Eq. 35; NaN where has_pressure() is false), the ends and the peak of the load
+  /// (docs/rollers.md).
   AlongRoller<Real> along_roller(int stations = 65) const {
     AlongRoller<Real> out;
     out.y_minus = y_minus();
@@ -92,7 +154,8 @@ struct LineSolution {
       out.f0.push_back(s.f0 / per_load);
       out.a.push_back(s.a);
       out.b.push_back(s.b);
-      out.p_max.push_back(strip(y).peak().pressure);
+      out.p_max.push_back(has_pressure() ? strip(y).peak().pressure
+                                         : std::numeric_limits<Real>::quiet_NaN());
       if (out.f0.back() > out.f0_max) {
         out.f0_max = out.f0.back();
         out.f0_max_y = y;
@@ -101,9 +164,18 @@ struct LineSolution {
     return out;
   }
 
-  /// a, b, G, F0 and Q at y (StripFunctions).
+  /// a, b, G, F0 and Q at y (StripFunctions): the strip's (36), (33), (46) with at most one
+  /// active term; with two or more, G0 = gamma a^2 and F0 = C1 a^2 (1/4 + gamma/2) (Eq. 33 with
+  /// (S8)) from the moments, and Q NaN.
   StripFunctions<Real> functions(Real y) const {
     const Real a = shape.a(y), b = shape.b(y);
+    if (!has_pressure()) {
+      if (!(a > 0)) return {a, b, Real(0), Real(0), std::numeric_limits<Real>::quiet_NaN()};
+      const Real u = LineShape<Real>::coordinate(shape.basis, shape.scale, shape.one_minus_t2(y));
+      const Real gamma = moments.gamma_at(u, shape.t_at(y));
+      return {a, b, gamma * a * a, c1 * a * a * (Real(1) / 4 + gamma / 2),
+              std::numeric_limits<Real>::quiet_NaN()};
+    }
     if (!(vtau > 0) || !(f > 0) || !(a > 0)) return {a, b, Real(0), c1 * a * a / 4, Real(0)};
     return strip_functions(c1, a, b, vtau, f);
   }

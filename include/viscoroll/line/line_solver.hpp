@@ -66,16 +66,14 @@ namespace viscoroll {
 
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
 /// quadrature rule (applied on the graded panels of every line integral). A material with one
-/// memory term (SingleTimeModel) is the paper's theory and its Solution a LineSolution; a
-/// spectrum of several terms is the theory of docs/theory.md section 14 (line/line_spectrum.hpp)
-/// and its Solution a LineSpectrumSolution.
+/// memory term (SingleTimeModel) is the paper's theory; a spectrum of several terms is the theory
+/// of docs/theory.md section 14 (line/line_spectrum.hpp). Both give a LineSolution.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 12>>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 class LineSolver {
  public:
-  /// LineSolution for a SingleTimeModel, LineSpectrumSolution for a spectrum.
-  using Solution = std::conditional_t<SingleTimeModel<Material>, LineSolution<Real, Quadrature>,
-                                      LineSpectrumSolution<Real, Quadrature>>;
+  /// The solution, for every material.
+  using Solution = LineSolution<Real, Quadrature>;
   /// A column vector of unknowns or residuals.
   using Vector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
   /// A dense matrix (a Jacobian).
@@ -183,7 +181,9 @@ class LineSolver {
                     .c1 = u.c1,
                     .vtau = vtau,
                     .f = f,
-                    .compliance = c};
+                    .compliance = c,
+                    .active_terms = f > 0 && vtau > 0 ? 1 : 0,
+                    .load_compliance = c * (1 + f)};
   }
 
   Solution closed_form(const Units& u, const StaticLineContact<Real>& s,
@@ -457,12 +457,8 @@ using LineSolverD = LineSolver<double, StandardLinearSolid<double>>;
 /// the paper's scene).
 using FastLineSolverD = LineSolver<double, StandardLinearSolid<double>, GaussLegendre<double, 6>>;
 
-// Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
-// viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
-// ones only), the solvers below are instantiated once in that library (src/) and
-// not in the including translation unit. Their entry points are defined out of the class (not
-// inline), so that g++ does not instantiate them here for inlining either. Other instantiations
-// are implicit, as in header-only mode.
+// Compiled mode (docs/building.md, "Compiled mode"; as PlaneSolver's in plane_solver.hpp): these
+// are instantiated once in viscoroll::compiled (or compiled_double), not here.
 #if defined(VISCOROLL_COMPILED)
 extern template class LineSolver<float, StandardLinearSolid<float>>;
 extern template class LineSolver<long double, StandardLinearSolid<long double>>;

@@ -32,7 +32,7 @@
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
-#include <viscoroll/line/line_spectrum_solution.hpp>
+#include <viscoroll/line/line_solution.hpp>
 
 namespace viscoroll {
 

@@ -13,6 +13,7 @@
 #include <concepts>
 #include <limits>
 #include <string>
+#include <utility>
 #include <viscoroll/core/outcome.hpp>
 
 namespace viscoroll::numerics {
@@ -92,6 +93,16 @@ struct LeastSquaresOutcome {
     stop.undefined = true;
     stop.reason = "Jacobian undefined";
     stop.code = StopCode::outside_domain;
+    return stop;
+  }
+  /// This outcome, stopped one iteration on at a least-squares minimum with no root near, for
+  /// the reason `why`.
+  LeastSquaresOutcome stalled(std::string why) const {
+    LeastSquaresOutcome stop = *this;
+    stop.minimum = true;
+    stop.reason = std::move(why);
+    stop.code = StopCode::no_descent;
+    ++stop.iterations;
     return stop;
   }
 };

@@ -163,13 +163,9 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
     history.push_back(cost);
     if (rmax > options.root_tolerance && history.size() > 20 &&
         history[history.size() - 21] - cost < Real(0.05) * history[history.size() - 21]) {
-      out.reason =
+      return out.stalled(
           "stalled: |r|^2 fell by less than 5% over 20 steps (a least-squares minimum, no root "
-          "near)";
-      out.minimum = true;
-      out.code = StopCode::no_descent;
-      ++out.iterations;
-      return out;
+          "near)");
     }
     // Stagnation (MINPACK's ftol test): a step that lowers |r|^2 by less than sqrt(eps) of
     // itself. From an updated Jacobian, refresh it; from a fresh one three times running, the
@@ -178,13 +174,9 @@ LeastSquaresOutcome levenberg_marquardt(const Problem& problem, DynamicVector<Re
       if (!newton_step) {
         if (!fresh && !refresh_jacobian()) return out.jacobian_undefined();
       } else if (++stalled >= 3) {
-        out.reason =
+        return out.stalled(
             "stalled at a least-squares minimum, no root near (|r|^2 falls by < sqrt(eps) per "
-            "step)";
-        out.minimum = true;
-        out.code = StopCode::no_descent;
-        ++out.iterations;
-        return out;
+            "step)");
       }
     } else {
       stalled = 0;

@@ -75,86 +75,67 @@ struct PlaneOptions {
   }
 };
 
-/// The plane solution: the contact, the pressure and the rolling friction.
+/// The plane solution, for any material: the contact, the pressure and the rolling friction. A
+/// material with at most one memory term (Elastic, StandardLinearSolid) is solved by (P1)-(P7);
+/// a spectrum (PronyCreep, PronyRelaxation) by the closed form of docs/theory.md section 12,
+/// whose pressure is the weighted sum of one-term strips (S9). A static or glassy scene, or one
+/// whose terms are all relaxed or glassy at this speed, has Hertz's strip.
 template <RealScalar Real, class Quadrature>
 struct PlaneSolution {
-  Real a;            ///< contact half width
-  Real b;            ///< offset of the contact centre ahead of the cylinder axis (Eq. 29)
-  Real g;            ///< G of Eqs. (33), (36)
-  Real a_long_term;  ///< a0: the V tau -> 0 (long-term Hertz) half width, 4 c (1+f) W / C1 = a0^2
-  Real f0;           ///< F0 = int p* dx = c (1 + f) W (Eq. 52); c W in the glassy closed form
-  Real q;            ///< Q of Eq. (46)
-  Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51)
-  bool converged;    ///< the root for a met the tolerance within the allowed iterations
-  int iterations;    ///< root-finder iterations (0 for a static scene)
+  Real a;  ///< contact half width
+  Real b;  ///< offset of the contact centre ahead of the cylinder axis (Eq. 29)
+  Real g;  ///< G of Eqs. (33), (36); G0 = Pi_h(0) of (S8) for a spectrum
+  /// a0: the V tau -> 0 (long-term Hertz) half width, a0^2 = 4 c (1 + f) W / C1, with the sum of
+  /// the creep ratios for a spectrum.
+  Real a_long_term;
+  Real f0;         ///< F0 = int p* dx = c (1 + f) W (Eq. 52); c W in the glassy closed form
+  Real q;          ///< Q of Eq. (46) (NaN for a spectrum: its chi is (S10)'s)
+  Real chi;        ///< rolling-friction coefficient C1 int x p / int p (Eq. 51, (P7), (S10))
+  bool converged;  ///< the root for a met the tolerance within the allowed iterations
+  int iterations;  ///< root-finder iterations (0 for a closed form)
   StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
   std::string reason{};                 ///< empty when converged, else why not
-  Real residual;                        ///< |A^2 + 2 f/(1+f) (V tau/a0) A R - 1| at the returned a
-  /// The strip's pressure (32), (35), from which pressure() and peak() are read.
-  StripPressure<Real, Quadrature> strip;
+  /// |A^2 + 2 f/(1+f) (V tau/a0) A R - 1| (P5), or |A^2 (1 + 2 G0/a^2) - 1| (S8) for a spectrum,
+  /// at the returned a, A = a / a0 of the terms solved for.
+  Real residual;
+  /// The strip's pressure (35), (S9), from which pressure() and peak() are read.
+  PlaneStrip<Real, Quadrature> strip;
+  /// Memory terms solved for at this speed: 0 for Hertz's strip (elastic, static, glassy, or a
+  /// spectrum's terms all relaxed or glassy), 1 for the paper's, the count after merging
+  /// near-equal times for a spectrum.
+  int active_terms = 0;
+  Real linear_residual{};  ///< relative residual of the linear system (S5); 0 for one term
+  /// Rounding amplification of the closed form (theory.md (S20): the larger of sum |A_i| and
+  /// the crowding of the retardation lengths); 1 for one term and for Hertz.
+  Real amplification = 1;
+  /// Bound on chi's rounding error, 64 eps amplification^(3/2) C1 a (theory.md (S20), which
+  /// for one term, amplification 1, bounds (P7)'s sum of non-negative terms): a chi within it of
+  /// zero (of either sign) is zero to rounding; no converged chi is below -chi_rounding. 0 for
+  /// Hertz's strip, whose chi is exactly 0.
+  Real chi_rounding{};
+  /// Bound on the relative change of the complex compliance made by merging near-equal times
+  /// (docs/theory.md (S19), (S20)); 0 where no term was merged (always for one term).
+  Real spectrum_error{};
 
-  /// Eq. (35): the pressure at x (moving frame; the cylinder axis is x = 0).
+  /// Eq. (35), (S9): the pressure at x (moving frame; the cylinder axis is x = 0).
   Real pressure(Real x) const { return strip.pressure(x); }
-  /// Eq. (32): the pseudo-pressure at x.
+  /// Eq. (32): the pseudo-pressure at x (one memory term; PlaneStrip::pseudo_pressure).
   Real pseudo_pressure(Real x) const { return strip.pseudo_pressure(x); }
   /// The pressure peak and its location.
   PressurePeak<Real> peak() const { return strip.peak(); }
 };
 
-/// The plane solution for a material with a spectrum (several memory terms): the closed form of
-/// docs/theory.md, section 12. Its pressure is the weighted sum of one-term strips (S9); a
-/// static or glassy scene, or one whose terms are all relaxed or glassy at this speed, has
-/// Hertz's strip (`hertz`).
-template <RealScalar Real, class Quadrature>
-struct PlaneSpectrumSolution {
-  Real a;            ///< contact half width
-  Real b;            ///< offset of the contact centre ahead of the cylinder axis
-  Real g;            ///< G0 = Pi_h(0) (S8): F0 = C1 (a^2/4 + G0/2)
-  Real a_long_term;  ///< a0: the long-term Hertz half width, a0^2 = 4 c (1 + sum f_k) W / C1
-  Real f0;           ///< F0 = int p* dx
-  Real chi;          ///< rolling-friction coefficient C1 int x p / int p (Eq. 51, (S10))
-  bool converged;    ///< the root for a met the tolerance within the allowed iterations
-  int iterations;    ///< root-finder iterations (0 for a closed form)
-  StopCode code = StopCode::converged;  ///< why it stopped, as a code (core/outcome.hpp)
-  std::string reason{};                 ///< empty when converged, else why not
-  Real residual;     ///< |A^2 (1 + 2 G0/a^2) - 1| at the returned a, A = a / a0 of the terms solved
-  int active_terms;  ///< retardation terms solved for; the others are relaxed or glassy at V
-  Real linear_residual;  ///< relative residual of the linear system (S5) at the returned a
-  /// Rounding amplification of the closed form (theory.md (S20): the larger of sum |A_i| and
-  /// the crowding of the retardation lengths); 1 for Hertz.
-  Real amplification;
-  /// Bound on chi's rounding error, 64 eps amplification^(3/2) C1 a (theory.md (S20)): a chi
-  /// within it of zero (of either sign) is zero to rounding; no converged chi is below
-  /// -chi_rounding.
-  Real chi_rounding;
-  /// Bound on the relative change of the complex compliance made by merging near-equal times
-  /// (docs/theory.md (S19), (S20)); 0 where no term was merged.
-  Real spectrum_error;
-  std::vector<StripPressure<Real, Quadrature>> hertz;  ///< the Hertz strip, if no term is active
-  std::vector<SpectrumStripPressure<Real, Quadrature>> spectrum;  ///< the strip (S9) otherwise
-
-  /// The pressure at x (moving frame; the cylinder axis is x = 0).
-  Real pressure(Real x) const {
-    return spectrum.empty() ? hertz.front().pressure(x) : spectrum.front().pressure(x);
-  }
-  /// The pressure peak and its location.
-  PressurePeak<Real> peak() const {
-    return spectrum.empty() ? hertz.front().peak() : spectrum.front().peak();
-  }
-};
-
 /// Solver of the plane problem over a scalar, a constitutive model and a quadrature rule (the
 /// rule serves the pressure reconstruction (35); a, b, G and chi are closed-form given a). A model
 /// with at most one memory term (SingleTimeModel: Elastic, StandardLinearSolid) is solved by
-/// (P1)-(P7) and gives a PlaneSolution; a spectrum (PronyCreep, PronyRelaxation) by the closed
-/// form of section 12 of docs/theory.md and gives a PlaneSpectrumSolution.
+/// (P1)-(P7); a spectrum (PronyCreep, PronyRelaxation) by the closed form of section 12 of
+/// docs/theory.md. Both give a PlaneSolution.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 24>>
 requires std::same_as<typename Material::real_type, Real> && QuadratureRule<Quadrature, Real>
 class PlaneSolver {
  public:
-  /// PlaneSolution for a SingleTimeModel, PlaneSpectrumSolution for a spectrum.
-  using Solution = std::conditional_t<SingleTimeModel<Material>, PlaneSolution<Real, Quadrature>,
-                                      PlaneSpectrumSolution<Real, Quadrature>>;
+  /// The solution, for every material.
+  using Solution = PlaneSolution<Real, Quadrature>;
 
   /// Throws std::invalid_argument for invalid options (PlaneOptions::validate).
   explicit PlaneSolver(Material material, PlaneOptions options = {})
@@ -242,7 +223,10 @@ class PlaneSolver {
                     .code = converged ? StopCode::converged : StopCode::root_finder_failed,
                     .reason = converged ? std::string() : root_failure(iterations),
                     .residual = residual,
-                    .strip = StripPressure<Real, Quadrature>(units, c1, a, b, g, vtau, f, c)};
+                    .strip = PlaneStrip<Real, Quadrature>(
+                        StripPressure<Real, Quadrature>(units, c1, a, b, g, vtau, f, c)),
+                    .active_terms = 1,
+                    .chi_rounding = 64 * std::numeric_limits<Real>::epsilon() * c1 * a};
   }
 
   /// Hertz's strip of half width a under the compliance (1 + f) c, in `units` as rolling():
@@ -263,7 +247,7 @@ class PlaneSolver {
                     .code = StopCode::converged,
                     .reason = {},
                     .residual = Real(0),
-                    .strip = strip};
+                    .strip = PlaneStrip<Real, Quadrature>(strip)};
   }
 
   /// The glassy closed form is within eps of the rolling solution (strip_is_glassy, (P6)).
@@ -300,14 +284,15 @@ class PlaneSolver {
     // a0 of the problem solved: a0^2 (1 + F - F_glassy) / (1 + F).
     const Real a0_eff = a0.m * sqrt((1 + creep_ratio - glassy_f) / (1 + creep_ratio));
     Solution s{};
+    s.q = std::numeric_limits<Real>::quiet_NaN();  // chi is (S10)'s
     s.a_long_term = a0.m;
     s.converged = true;
     s.amplification = 1;
     if (active.empty()) {
       s.a = a0_eff;
       s.f0 = c1.m * a0_eff * a0_eff / 4;
-      s.hertz.emplace_back(units, c1.m, a0_eff, Real(0), Real(0), Real(0), creep_ratio - glassy_f,
-                           cc.m);
+      s.strip = PlaneStrip<Real, Quadrature>(StripPressure<Real, Quadrature>(
+          units, c1.m, a0_eff, Real(0), Real(0), Real(0), creep_ratio - glassy_f, cc.m));
     } else {
       // Near-equal times merged where the closed form would lose digits ((S19), (S20)).
       const auto conditioned = detail::condition_spectrum(
@@ -377,7 +362,7 @@ class PlaneSolver {
       s.linear_residual = st.residual;
       s.amplification = conditioned.amplification;
       s.active_terms = static_cast<int>(merged.size());
-      s.spectrum.emplace_back(units, c1.m, a, st, lengths, c_eff);
+      s.strip = PlaneStrip<Real, Quadrature>(units, c1.m, a, st, lengths, c_eff);
     }
     in_caller_units(s, units, load, inputs);
     return s;
@@ -392,7 +377,7 @@ class PlaneSolver {
     const auto in = [&](Real x, int exponent, std::string_view what) {
       return detail::representable(x, exponent, what, inputs);
     };
-    constexpr bool spectrum = requires { s.chi_rounding; };
+    constexpr bool spectrum = !SingleTimeModel<Material>;
     const Real mean_pressure = load.m / (2 * s.a);  // in `units`, before a is converted
     s.a_long_term = in(s.a_long_term, length,
                        spectrum ? "the long-term half width a0 = sqrt(4 c (1+F) load/c1)"
@@ -401,9 +386,9 @@ class PlaneSolver {
     s.b = in(s.b, length, "the offset b of the contact");
     s.g = in(s.g, area, spectrum ? "G0 of (S8)" : "G of Eq. (36)");
     s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
-    if constexpr (requires { s.q; }) s.q = in(s.q, curvature + area, "Q of Eq. (46)");
+    if constexpr (!spectrum) s.q = in(s.q, curvature + area, "Q of Eq. (46)");
     s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
-    if constexpr (spectrum) s.chi_rounding = times_power_of_two(s.chi_rounding, curvature + length);
+    s.chi_rounding = times_power_of_two(s.chi_rounding, curvature + length);
     in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
   }
 

@@ -109,14 +109,21 @@ struct PlaneSubstrateSolution {
   PressurePeak<Real> peak() const { return peak_; }
 };
 
+namespace detail {
+/// What PlaneSubstrateSolver asks of its arguments: a material and a body over Real, the material
+/// with Poisson's ratio `nu()` (the substrate's T depends on it).
+template <class Real, class Material, class Body>
+concept PlaneSubstrateArguments = std::same_as<typename Material::real_type, Real> &&
+    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
+  { m.nu() } -> std::convertible_to<Real>;
+};
+}  // namespace detail
+
 /// Solver of the plane rolling contact of a rigid cylinder on a substrate of a viscoelastic
 /// material: PlaneSubstrateSolver<Real, Material, Body>. The material models ConstitutiveModel and
 /// has Poisson's ratio `nu()` (the substrate's T depends on it); the body models Substrate.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 class PlaneSubstrateSolver {
  public:
   /// The solution type.

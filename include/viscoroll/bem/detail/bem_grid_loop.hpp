@@ -23,8 +23,7 @@
 namespace viscoroll {
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::solve_on(const Scaled& u, int n, const Solution* start,
                                                      Real across) const -> Solution {
   using clock = std::chrono::steady_clock;
@@ -52,8 +51,7 @@ auto BemSolver<Real, Material, Quadrature>::solve_on(const Scaled& u, int n, con
 }
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Solution* start) const
     -> Solution {
   using std::abs;

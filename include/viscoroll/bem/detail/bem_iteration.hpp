@@ -27,8 +27,7 @@ namespace viscoroll {
 
 // The active-set iteration's start: `start` scaled to the load, else an effective Hertz contact.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::initial_state(
     const BemScene<Real>& scene, const BemGrid<Real>& grid, const HertzContact<Real>& hertz,
     const std::vector<PronyTerm<Real>>& terms, Real compliance, const Solution* start) const
@@ -60,8 +59,7 @@ auto BemSolver<Real, Material, Quadrature>::initial_state(
 
 // (B18): a local bed's contact, exactly, row by row from the front back.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::local_bed_state(
     const BemGrid<Real>& grid, const bem::InfluenceTable<Real, Quadrature>& table,
     const std::vector<Real>& h, Real load, Real d_scale) -> numerics::ActiveSetState<Real> {
@@ -96,8 +94,7 @@ auto BemSolver<Real, Material, Quadrature>::local_bed_state(
 
 // The contact of (B11): the active-set iteration on the gap of the cell centres.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::iterate(
     const BemScene<Real>& scene, const BemGrid<Real>& grid, const HertzContact<Real>& hertz,
     const bem::ConvolutionOperator<Real>& op, const std::vector<Complex>& symbol,
@@ -134,8 +131,7 @@ auto BemSolver<Real, Material, Quadrature>::iterate(
 
 // The solution of the last iterate: gap, load, chi (Eq. 51), edges (B12), residual (B11).
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::measure(
     const BemScene<Real>& scene, const BemGrid<Real>& grid, const HertzContact<Real>& hertz,
     const bem::ConvolutionOperator<Real>& op, const std::vector<Real>& h,
@@ -196,8 +192,7 @@ auto BemSolver<Real, Material, Quadrature>::measure(
 
 // What a converged solution does not claim (B12, B13).
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 void BemSolver<Real, Material, Quadrature>::judge(Solution& sol, const BemScene<Real>& scene,
                                                   const std::vector<PronyTerm<Real>>& terms,
                                                   int length_exponent) const {
@@ -275,8 +270,7 @@ void BemSolver<Real, Material, Quadrature>::judge(Solution& sol, const BemScene<
 
 // (B12): a(0), b(0) and l of the pressure p on grid g.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::locate_edges(const BemGrid<Real>& g,
                                                          const std::vector<Real>& p) -> Edges {
   const auto at = [&](int i, int j) { return p[g.index(i, j)]; };

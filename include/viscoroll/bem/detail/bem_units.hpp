@@ -20,8 +20,7 @@ namespace viscoroll {
 
 // The scene in the units of the solve (docs/bem.md, "Scaling").
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::scaled(const BemScene<Real>& scene) const -> Scaled {
   // As the plane and line solvers (core/solve_inputs.hpp): a compliance outside the normal range
   // (mu_D near the largest or smallest double overflows or underflows (1 - nu)/(2 pi mu_D) in
@@ -79,8 +78,7 @@ auto BemSolver<Real, Material, Quadrature>::scaled(const BemScene<Real>& scene) 
 
 // The grid of `n` elements per semi-axis in the units of `u`.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::grid_in_units(const Scaled& u,
                                                           const HertzContact<Real>& hertz, int n,
                                                           Real across) const -> BemGrid<Real> {
@@ -96,8 +94,7 @@ auto BemSolver<Real, Material, Quadrature>::grid_in_units(const Scaled& u,
 
 // (B19): the substrate's sizing factor F, by bisection in ln F.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::sizing_factor(const Scaled& u) const -> Real {
   using std::exp;
   using std::log;
@@ -119,8 +116,7 @@ auto BemSolver<Real, Material, Quadrature>::sizing_factor(const Scaled& u) const
 
 // A start solution in the caller's units, in the units of `u` (or null).
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::start_in_units(const Solution* start, const Scaled& u)
     -> std::optional<Solution> {
   if (start == nullptr) return std::nullopt;
@@ -137,8 +133,7 @@ auto BemSolver<Real, Material, Quadrature>::start_in_units(const Solution* start
 
 // The solution of the units of `u` in the caller's units.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
-requires std::same_as<typename Material::real_type, Real> &&
-    NodalQuadratureRule<Quadrature, bem::coefficient_real_t<Real>>
+requires detail::BemSolverArguments<Real, Material, Quadrature>
 void BemSolver<Real, Material, Quadrature>::to_caller_units(Solution& s, const Scaled& u) {
   const int k = u.length, w = u.displacement, pe = u.pressure;
   Real pmax = 0;

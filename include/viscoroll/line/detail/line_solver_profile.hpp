@@ -33,11 +33,10 @@ auto LineSolver<Real, Material, Quadrature>::profile_static_failure(
   sol.iterations = 0;
   sol.residual = std::numeric_limits<Real>::quiet_NaN();
   sol.c1 = slow_c.c1;
-  if constexpr (SingleTimeModel<Material>) {
-    sol.vtau = Real(0);
-    sol.f = f;
-    sol.compliance = c;
-  }
+  sol.vtau = Real(0);
+  sol.f = f;
+  sol.compliance = c;
+  sol.load_compliance = c * (1 + f);
   sol.code = slow_c.code == StopCode::contact_reaches_body_end ? slow_c.code
                                                                : StopCode::static_contact_failed;
   sol.reason = "the long-term static contact of the profile: " + slow_c.reason +

@@ -26,9 +26,9 @@
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/detail/line_iteration.hpp>
 #include <viscoroll/line/line_profile.hpp>
+#include <viscoroll/line/line_solution.hpp>
 #include <viscoroll/line/line_solver.hpp>
 #include <viscoroll/line/line_spectrum.hpp>
-#include <viscoroll/line/line_spectrum_solution.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/line/static_profile_contact.hpp>
 #include <viscoroll/material/elastic.hpp>
@@ -183,46 +183,35 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_single(const SpectrumRun<S
   // solver, in the caller's units.
   const Real pi = boost::math::constants::pi<Real>();
   const Real mu = 1 / (2 * pi * c_eff);  // c = (1 - nu)/(2 pi mu) with nu = 0
-  LineSolution<Real, Quadrature> one = [&] {
+  Solution one = [&] {
     if (merged.empty()) {
       const LineSolver<Real, Elastic<Real>, Quadrature> elastic(Elastic<Real>(mu, Real(0)),
                                                                 options_);
-      const auto e = elastic.solve(scene);
-      return LineSolution<Real, Quadrature>(e);
+      return elastic.solve(scene);
     }
     // tau back from lambda (units) through the speed: lambda 2^length / V.
     const Real tau = times_power_of_two(merged[0].q, u.length) / scene.speed;
     const LineSolver<Real, StandardLinearSolid<Real>, Quadrature> sls(
         StandardLinearSolid<Real>(mu, Real(0), merged[0].w, tau), options_);
-    const LineSolution<Real, Quadrature>* seed =
-        start != nullptr && start->single ? &*start->single : nullptr;
+    // A seed with one active term is the standard linear solid's solution.
+    const Solution* seed = start != nullptr && start->active_terms == 1 ? start : nullptr;
     return sls.solve(scene, seed);
   }();
-  sol.shape = one.shape;
-  sol.d = one.d;
-  sol.chi = one.chi;
-  sol.converged = one.converged;
-  sol.root = one.root;
-  sol.code = one.code;
-  sol.reason = one.reason;
-  sol.iterations = one.iterations;
-  sol.residual = one.residual;
-  sol.warnings = one.warnings;
-  sol.warning_codes = one.warning_codes;
-  sol.load_compliance = one.f0_per_load();
+  // The remaining compliance's solution, with the spectrum's count, error and long-term contact.
+  one.active_terms = sol.active_terms;
+  one.spectrum_error = sol.spectrum_error;
   if constexpr (SpectrumRun<Scene>::ellipsoid) {
     const auto full =
         static_line_contact(scene.c1, scene.c2, run.c * (1 + run.creep_ratio) * scene.load);
-    sol.a_long_term = full.a0;
-    sol.l_long_term = full.l;
-    sol.d_long_term = full.d;
+    one.a_long_term = full.a0;
+    one.l_long_term = full.l;
+    one.d_long_term = full.d;
   } else {
-    sol.a_long_term = run.slow_profile->a(run.slow_profile->centre());
-    sol.l_long_term = run.slow_profile->half_length();
-    sol.d_long_term = run.slow_profile->d;
+    one.a_long_term = run.slow_profile->a(run.slow_profile->centre());
+    one.l_long_term = run.slow_profile->half_length();
+    one.d_long_term = run.slow_profile->d;
   }
-  if (!merged.empty()) sol.single = std::move(one);
-  return sol;
+  return one;
 }
 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>

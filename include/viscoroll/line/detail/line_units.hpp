@@ -50,7 +50,7 @@ struct LineUnits {
   }
 };
 
-/// A line solution (LineSolution or LineSpectrumSolution) from the units u into the caller's,
+/// A line solution (LineSolution, any material) from the units u into the caller's,
 /// with c1 the caller's: a converged one's numbers each normal and finite (b, the centre and chi
 /// may be zero), else an error naming the inputs (detail::representable, docs/errors.md); a
 /// non-converged one scaled back as it is.
@@ -73,7 +73,7 @@ Solution in_caller_units(Solution sol, const LineUnits<Real>& u, Real c1, const 
   sol.l_long_term = in(sol.l_long_term, length, "the long-term static half length l0", false);
   sol.d_long_term = in(sol.d_long_term, curvature + 2 * length, "the long-term static d0", false);
   sol.chi = in(sol.chi, curvature + length, "the rolling-friction coefficient chi", true);
-  if constexpr (requires { sol.vtau; }) sol.vtau = in(sol.vtau, length, "V tau", true);
+  sol.vtau = in(sol.vtau, length, "V tau", true);
   sol.c1 = c1;
   return sol;
 }

@@ -22,10 +22,7 @@ namespace viscoroll {
 
 // (Q10)-(Q11): the spring bed's modes.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 auto PlaneSubstrateSolver<Real, Material, Body>::bed_modes(const Problem& pr) const -> BedModes {
   const Real pi = boost::math::constants::pi<Real>();
   BedModes modes;
@@ -62,10 +59,7 @@ auto PlaneSubstrateSolver<Real, Material, Body>::bed_modes(const Problem& pr) co
 
 // (Q12): a spring bed, its edges by roots of the pressure and of the load.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 auto PlaneSubstrateSolver<Real, Material, Body>::solve_bed(const Problem& pr) const -> Solution {
   using std::abs;
   using std::cbrt;

@@ -29,10 +29,7 @@ namespace viscoroll {
 
 // (Q6), (Q7), (Q9): the collocation system at half width a with N terms.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 auto PlaneSubstrateSolver<Real, Material, Body>::build(const Problem& pr, Real a, int n_terms,
                                                        bool with_d) const -> System {
   using std::cos;
@@ -83,10 +80,7 @@ auto PlaneSubstrateSolver<Real, Material, Body>::build(const Problem& pr, Real a
 
 // (Q7), (Q9): the substrate's remainder E_n, D_n subtracted from the rows.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 void PlaneSubstrateSolver<Real, Material, Body>::fourier_rows(const Problem& pr, Real a,
                                                               int n_terms, bool with_d,
                                                               System& sys) const {
@@ -135,10 +129,7 @@ void PlaneSubstrateSolver<Real, Material, Body>::fourier_rows(const Problem& pr,
 
 // (Q5): the pressure of a level, its peak and its least sampled value.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 void PlaneSubstrateSolver<Real, Material, Body>::pressure_of(const Problem& pr, Level& l) {
   using std::cos;
   const Real pi = boost::math::constants::pi<Real>();
@@ -182,10 +173,7 @@ void PlaneSubstrateSolver<Real, Material, Body>::pressure_of(const Problem& pr, 
 
 // (Q8): one level of the refinement, a by TOMS 748 on the load.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 auto PlaneSubstrateSolver<Real, Material, Body>::level(const Problem& pr, int n_terms, Real guess,
                                                        Real spread) const -> Level {
   Level out;
@@ -244,10 +232,7 @@ auto PlaneSubstrateSolver<Real, Material, Body>::level(const Problem& pr, int n_
 
 // A body: levels of N terms doubled until the estimates (Q13) meet the tolerance.
 template <RealScalar Real, ConstitutiveModel Material, Substrate Body>
-requires std::same_as<typename Material::real_type, Real> &&
-    std::same_as<typename Body::real_type, Real> && requires(const Material& m) {
-  { m.nu() } -> std::convertible_to<Real>;
-}
+requires detail::PlaneSubstrateArguments<Real, Material, Body>
 auto PlaneSubstrateSolver<Real, Material, Body>::solve_body(const Problem& pr) const -> Solution {
   using std::abs;
   using std::max;
