@@ -5,7 +5,7 @@
 //   cold: LineSolver::solve(scene), the cold start (plane seed, continuation stages 2, 4, N);
 //   seeded: LineSolver::solve(scene, &previous), the sweep's solve (the same stages from the
 //     previous speed's seeded solution where that is a root, the rule of viscoroll::sweep,
-//     detail::usable_as_seed; else, and at the first speed, the cold one);
+//     viscoroll::usable_as_seed; else, and at the first speed, the cold one);
 //   direct: Levenberg-Marquardt at the final N straight from the previous speed's seeded
 //     solution (packed at N, no stages), then the least-squares minimisation where it stops
 //     short, as the solver's last stage does;
@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
     Solution cold;
     const double t_cold = best_ms(repeat, [&] { cold = solver.solve(sc); });
     sum_cold += t_cold;
-    if (i == 0 || !viscoroll::detail::usable_as_seed(seeded.back())) {
+    if (i == 0 || !viscoroll::usable_as_seed(seeded.back())) {
       seeded.push_back(cold);
       sum_seeded += t_cold;
       sum_direct += t_cold;
@@ -181,7 +181,7 @@ int main(int argc, char** argv) {
     const Vector from = res.pack(previous.shape, previous.d);
     Direct d, p;
     const double t_direct = best_ms(repeat, [&] { d = direct(res, from, s, max_iterations); });
-    const Vector before = i >= 2 && viscoroll::detail::usable_as_seed(seeded[i - 2])
+    const Vector before = i >= 2 && viscoroll::usable_as_seed(seeded[i - 2])
                               ? res.pack(seeded[i - 2].shape, seeded[i - 2].d)
                               : from;
     const Vector predictor = 2 * from - before;

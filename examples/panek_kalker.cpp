@@ -35,6 +35,7 @@
 #include <string_view>
 #include <vector>
 #include <viscoroll/line/line_solver.hpp>
+#include <viscoroll/sweep.hpp>
 
 namespace {
 
@@ -103,10 +104,10 @@ int main(int argc, char** argv) {
   };
   // Continuation from the previous speed.
   std::optional<Solution> last;
-  // The previous speed's solution where it is a converged root; a least-squares minimum seeds
-  // nothing (the rule of viscoroll::sweep, sweep.hpp, which vr.sweep follows too).
+  // The previous speed's solution where it seeds by viscoroll::sweep's rule (usable_as_seed,
+  // which vr.sweep follows too: a least-squares minimum seeds nothing).
   auto seed = [&]() -> const Solution* {
-    return last && last->converged && last->root ? &*last : nullptr;
+    return last && viscoroll::usable_as_seed(*last) ? &*last : nullptr;
   };
 
   // Fig. 3 and 4: the sweep.

@@ -744,49 +744,19 @@ std::string temperature_label(const Problem& p, double temperature, double speed
          (p.speeds.size() > 1 ? ", speed = " + shortest(speed) : "");
 }
 
-/// A solver whose solutions carry the wall time of their solve (the output's `seconds`), in the
-/// shape viscoroll::sweep takes: the seed is passed on to solvers that take one.
-template <class Solver>
-struct Timed {
-  struct Solution {
-    typename Solver::Solution s;
-    double seconds;
-    bool converged;  ///< s.converged,
-    int iterations;  ///< s.iterations and
-    bool root;       ///< s.root (true for a solver without one), for the sweep's choice of seed
-  };
-  const Solver& solver;
-
-  template <class Scene>
-  Solution solve(const Scene& scene, const Solution* seed) const {
-    const auto start = std::chrono::steady_clock::now();
-    auto s = [&] {
-      if constexpr (requires { solver.solve(scene, &seed->s); })
-        return solver.solve(scene, seed != nullptr ? &seed->s : nullptr);
-      else
-        return solver.solve(scene);
-    }();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const bool converged = s.converged;
-    const int iterations = s.iterations;
-    bool root = true;
-    if constexpr (requires { s.root; }) root = s.root;
-    return {std::move(s), seconds, converged, iterations, root};
-  }
-};
-
 /// Solves `scene` at every speed of the problem with `solver` by viscoroll::sweep (chunks of
 /// continuation on --threads threads; the result does not depend on the thread count), after
 /// `done` solves of earlier taus (for the progress line).
 template <class Solver, class Scene>
-std::vector<typename Timed<Solver>::Solution> sweep_speeds(const Solver& solver, const Scene& scene,
-                                                           const Problem& p, const Output& out,
-                                                           std::size_t done) {
+std::vector<typename viscoroll::TimedSolver<Solver>::Solution> sweep_speeds(const Solver& solver,
+                                                                            const Scene& scene,
+                                                                            const Problem& p,
+                                                                            const Output& out,
+                                                                            std::size_t done) {
   viscoroll::SweepOptions options;
   options.threads = p.threads;
   options.progress = [&out, done](std::size_t k, std::size_t) { out.progress(done + k); };
-  return viscoroll::sweep(Timed<Solver>{solver}, scene, p.speeds, options);
+  return viscoroll::sweep(viscoroll::TimedSolver<Solver>{solver}, scene, p.speeds, options);
 }
 
 /// Runs every (key, speed) of the problem, the keys its taus (or a prony material's temperatures):
@@ -809,8 +779,8 @@ int run_sweeps(const Problem& p, const std::vector<double>& keys, Output& out, S
   for (std::size_t i = 0; i < solvers.size(); ++i) {
     const auto results = sweep_speeds(solvers[i], scenes.front(), p, out, i * scenes.size());
     for (std::size_t k = 0; k < scenes.size(); ++k) {
-      all_converged = all_converged && results[k].converged;
-      report(keys[i], scenes[k], results[k].s, results[k].seconds);
+      all_converged = all_converged && results[k].solution.converged;
+      report(keys[i], scenes[k], results[k].solution, results[k].seconds);
     }
   }
   return all_converged ? 0 : 1;

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <concepts>
 #include <cstddef>
 #include <exception>
@@ -28,6 +29,8 @@
 #include <stdexcept>
 #include <thread>
 #include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 #include <viscoroll/core/validate.hpp>
 
@@ -82,10 +85,13 @@ concept SeededSolver = requires(const Solver& solver, const Scene& scene,
   { solver.solve(scene, seed) } -> std::convertible_to<typename Solver::Solution>;
 };
 
-/// A solution seeds the next speed when it converged, came from an iteration (a closed form,
-/// iterations == 0, carries no more than the solver's own cold start) and, where the solution
-/// says so, is a root: a least-squares minimum seeds nothing, since the line solver answers a
-/// seeded scene without a root from its cold start anyway (LineSolver::solve).
+}  // namespace detail
+
+/// The sweeps' seed rule: a solution seeds the next speed when it converged, came from an
+/// iteration (a closed form, iterations == 0, carries no more than the solver's own cold start)
+/// and, where the solution says so, is a root: a least-squares minimum seeds nothing, since the
+/// line solver answers a seeded scene without a root from its cold start anyway
+/// (LineSolver::solve). For a loop of one's own that continues as sweep() does.
 template <class Solution>
 bool usable_as_seed(const Solution& s) {
   bool usable = s.converged;
@@ -94,7 +100,64 @@ bool usable_as_seed(const Solution& s) {
   return usable;
 }
 
-}  // namespace detail
+/// A solution with the wall-clock seconds its solve took and what TimedSolver's `Attach` made of
+/// it (nothing by default).
+template <class Inner, class Extra = std::monostate>
+struct Timed {
+  Inner solution;      ///< the solver's solution
+  double seconds = 0;  ///< the solve's wall-clock time (std::chrono::steady_clock)
+  Extra extra{};       ///< what TimedSolver's Attach made of it
+};
+
+/// A timed solution seeds as the solution it holds.
+template <class Inner, class Extra>
+bool usable_as_seed(const Timed<Inner, Extra>& t) {
+  return usable_as_seed(t.solution);
+}
+
+/// TimedSolver's default Attach: nothing.
+struct NoAttachment {
+  /// Nothing, for any solution, speed and seconds.
+  template <class Inner>
+  std::monostate operator()(const Inner&, double, double) const {
+    return {};
+  }
+};
+
+/// `solver` with every solve timed, for sweep(): its Solution is a Timed holding the solver's
+/// solution, the seconds and attach(solution, speed, seconds), made on the sweep's worker thread
+/// (the Python bindings build their records there). The solver is handed the solution a timed
+/// seed holds, and usable_as_seed reads it: a timed sweep gives the plain sweep's numbers bit for
+/// bit (the command line and the Python bindings sweep through it).
+template <class Solver, class Attach = NoAttachment>
+struct TimedSolver {
+  /// The solver's solution.
+  using Inner = typename Solver::Solution;
+  /// What attach makes of a solution.
+  using Extra = std::invoke_result_t<const Attach&, const Inner&, double, double>;
+  /// A timed solution.
+  using Solution = Timed<Inner, Extra>;
+
+  const Solver& solver;  ///< the solver timed
+  Attach attach{};       ///< (solution, speed, seconds) -> Extra
+
+  /// Solves `scene` from `seed`'s solution (a solver without seeds: from the scene alone), timed.
+  template <class Scene>
+  Solution solve(const Scene& scene, const Solution* seed) const {
+    const auto start = std::chrono::steady_clock::now();
+    Inner inner = [&] {
+      if constexpr (detail::SeededSolver<Solver, Scene>)
+        return solver.solve(scene, seed != nullptr ? &seed->solution : nullptr);
+      else
+        return solver.solve(scene);
+    }();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Solution out{std::move(inner), seconds, Extra{}};
+    out.extra = attach(out.solution, double(scene.speed), seconds);
+    return out;
+  }
+};
 
 namespace detail {
 

@@ -186,42 +186,6 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// A solver wrapped for viscoroll::sweep: each solve also times itself and builds its Solved
-/// (fields included) on the worker thread. The seed handed to the wrapped solver is the same
-/// solution viscoroll::sweep would hand it, so the numbers are those of the plain call.
-template <class Solver, class Make>
-struct TimedSolver {
-  using Inner = typename Solver::Solution;
-  struct Solution {
-    Inner inner;
-    SolvedPtr solved;
-    bool converged = false;
-    int iterations = 0;
-    bool root = true;  ///< inner.root where the solution has one: a minimum seeds nothing
-  };
-
-  const Solver& solver;
-  Make make;  ///< (Inner, speed, seconds) -> SolvedPtr
-
-  template <class Scene>
-  Solution solve(const Scene& scene, const Solution* seed) const {
-    const auto start = std::chrono::steady_clock::now();
-    Inner inner = [&] {
-      if constexpr (requires { solver.solve(scene, static_cast<const Inner*>(nullptr)); })
-        return solver.solve(scene, seed ? &seed->inner : nullptr);
-      else
-        return solver.solve(scene);  // the plane solver takes no seed
-    }();
-    const double seconds = seconds_since(start);
-    Solution out{std::move(inner), nullptr, false, 0};
-    out.converged = out.inner.converged;
-    out.iterations = out.inner.iterations;
-    if constexpr (requires { out.inner.root; }) out.root = out.inner.root;
-    out.solved = make(out.inner, scene.speed, seconds);
-    return out;
-  }
-};
-
 /// One solve of a seeded method (line: SolvedT = LineSolved; bem: BemSolved), timed; `start`
 /// must be a result of the same method and solution type. SolvedT is constructed from
 /// (solution, keys, speed, grid, seconds); `keys` is its RecordKeys (or what it takes in their
@@ -244,17 +208,18 @@ SolvedPtr solve_seeded(const Solver& solver, const Scene& at, Method method, con
   return std::make_shared<SolvedT>(std::move(s), keys, at.speed, grid, seconds);
 }
 
-/// viscoroll::sweep over `speeds` from the scene `at` (its speed replaced); `make` builds each
-/// result's Solved on the worker thread, as TimedSolver describes.
+/// viscoroll::sweep over `speeds` from the scene `at` (its speed replaced), timed by
+/// viscoroll::TimedSolver; `make` builds each result's Solved from (solution, speed, seconds) on
+/// the worker thread.
 template <class Solver, class Scene, class Make>
 std::vector<SolvedPtr> sweep_timed(const Solver& solver, const Scene& at,
                                    std::span<const double> speeds, Make make,
                                    const SweepOptions& options) {
-  const TimedSolver<Solver, Make> timed{solver, std::move(make)};
+  const viscoroll::TimedSolver<Solver, Make> timed{solver, std::move(make)};
   auto solutions = sweep(timed, at, speeds, options);
   std::vector<SolvedPtr> out;
   out.reserve(solutions.size());
-  for (auto& s : solutions) out.push_back(std::move(s.solved));
+  for (auto& s : solutions) out.push_back(std::move(s.extra));
   return out;
 }
 

@@ -3,11 +3,13 @@
 // the previous converged, iterated solution of its chunk), bit for bit and whatever the thread
 // count; a solver without seeds (plane) is solved speed by speed; an invalid speed is rethrown
 // with the library's message; the options validate themselves; a stop flag stops the threads
-// before their next solve, and a flag never set changes nothing.
+// before their next solve, and a flag never set changes nothing; a timed solver (TimedSolver)
+// gives the plain sweep's solutions.
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 #include <viscoroll/plane/plane_solver.hpp>
 #include <viscoroll/sweep.hpp>
@@ -64,6 +66,33 @@ TEST_CASE("sweep: the line solver's chunked continuation, bit for bit for any th
       REQUIRE(got[i].converged);
       require_same_solution(got[i], expected[i]);
     }
+  }
+}
+
+TEST_CASE("sweep: a timed solver gives the plain sweep's solutions, with seconds and attachment",
+          "[sweep]") {
+  // TimedSolver hands the solver the solution a timed seed holds, and usable_as_seed reads it:
+  // the same continuation, bit for bit; attach sees each solution with its speed and seconds.
+  const viscoroll::testing::PaperScene paper;
+  const viscoroll::LineSolverD solver = paper.solver(3);
+  const std::vector<double> speeds = log_speeds(0.05, 20, 10);
+  SweepOptions options;
+  options.chunk = 4;
+  options.threads = 2;
+  const auto plain = viscoroll::sweep(solver, paper.scene(0), speeds, options);
+  const auto attach = [](const viscoroll::LineSolverD::Solution&, double speed, double seconds) {
+    return std::pair{speed, seconds};
+  };
+  const viscoroll::TimedSolver<viscoroll::LineSolverD, decltype(attach)> timed{solver, attach};
+  const auto got = viscoroll::sweep(timed, paper.scene(0), speeds, options);
+  REQUIRE(got.size() == speeds.size());
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    INFO("speed " << speeds[i]);
+    require_same_solution(got[i].solution, plain[i]);
+    CHECK(viscoroll::usable_as_seed(got[i]) == viscoroll::usable_as_seed(plain[i]));
+    CHECK(got[i].seconds > 0);
+    CHECK(got[i].extra.first == speeds[i]);
+    CHECK(got[i].extra.second == got[i].seconds);
   }
 }
 
