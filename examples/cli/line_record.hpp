@@ -15,8 +15,8 @@ namespace viscoroll::cli {
 /// of --profile-out: 65 evenly spaced inside (-l, l), y = 0 among them.
 inline constexpr int line_profile_stations = 65;
 
-/// The peak of the load per unit length over the stations of along_roller(stations) (LineSolution
-/// or LineSpectrumSolution) and where it is (the first of equal peaks): F0(y)/f0_per_load() (the
+/// The peak of the load per unit length over the stations of along_roller(stations) (LineSolution)
+/// and where it is (the first of equal peaks): F0(y)/f0_per_load() (the
 /// long-term compliance, (1 + f) c of Eq. 47 with (52)) at y = l (2k/(stations + 1) - 1),
 /// k = 1..stations, computed as along_roller computes them but without its strips' peak pressures
 /// (about 5 us against 3-8 ms a solve on the paper's scene); cli_line_profile.test.cpp checks it
@@ -40,7 +40,7 @@ std::pair<double, double> line_f0_peak(const Solution& s, int stations) {
   return {peak, at};
 }
 
-/// The fields of a line solution `s` (LineSolution or LineSpectrumSolution) after the record's
+/// The fields of a line solution `s` (LineSolution, any material) after the record's
 /// head (method, the material's keys, speed): the contact's shape up to chi (a0, b0 at y = 0,
 /// both 0 where the contact does not reach y = 0) (with the peak of the
 /// load per unit length along the roller, f0_max at f0_max_y, over

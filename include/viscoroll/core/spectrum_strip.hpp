@@ -394,9 +394,9 @@ class PlaneStrip {
   }
 
  private:
-  /// x in the strip's units (caller's for the strip of one term, whose own converts) to the
-  /// caller's.
-  Real length(Real x) const { return spectrum_ ? times_power_of_two(x, units_.length) : x; }
+  /// x in the strip's units to the caller's (the strip of one term keeps a and b in the
+  /// caller's: its units_ are 2^0).
+  Real length(Real x) const { return times_power_of_two(x, units_.length); }
 
   StripUnits units_{};
   Real a_{}, b_{};

@@ -56,7 +56,7 @@ struct ValidityInputs {
   Real body_min = none, body_max = none;  ///< the roller body's ends along y (m)
   ///@}
   bool line_theory = false;  ///< the result is the line method's: (V3) applies
-  /// The line method's active memory terms (LineSpectrumSolution::active_terms): two or more
+  /// The line method's active memory terms (LineSolution::active_terms): two or more
   /// solve by its spectrum path, whose chi needs the longer contact of (V3s).
   int memory_terms = 1;
   Real speed = none;  ///< rolling speed (m/s)

@@ -266,8 +266,7 @@ class PlaneSolver {
     const Real c = inputs.c;
     const auto& terms = material_.memory_terms();
     detail::require_spectrum_terms(terms.size(), "plane");
-    Real creep_ratio = 0;
-    for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
+    const Real creep_ratio = material_.creep_ratio();  // F = sum f_k
     const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
     const auto creep = binary<Real>(1 + creep_ratio);
     const auto a0 =
@@ -370,8 +369,8 @@ class PlaneSolver {
 
   /// A solution `s` computed in `units` (one term or a spectrum) in the caller's units: each
   /// number zero or normal and finite, else an error naming the `inputs` (docs/errors.md).
-  template <class Sol, class Inputs>
-  static void in_caller_units(Sol& s, const StripUnits& units, const Binary<Real>& load,
+  template <class Inputs>
+  static void in_caller_units(Solution& s, const StripUnits& units, const Binary<Real>& load,
                               const Inputs& inputs) {
     const int length = units.length, area = 2 * length, curvature = units.curvature;
     const auto in = [&](Real x, int exponent, std::string_view what) {

@@ -79,8 +79,7 @@ auto LineSolver<Real, Material, Quadrature>::solve_spectrum(const Scene& scene,
   const Real c = inputs.c;
   const auto& terms = material_.memory_terms();
   detail::require_spectrum_terms(terms.size(), "line");
-  Real creep_ratio = 0;
-  for (std::size_t k = 0; k < terms.size(); ++k) creep_ratio += terms[k].f;
+  const Real creep_ratio = material_.creep_ratio();  // F = sum f_k
   const Real c1 = [&] {
     if constexpr (ellipsoid)
       return scene.c1;
