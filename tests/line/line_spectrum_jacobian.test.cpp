@@ -1,7 +1,7 @@
-// Tests of LineSpectrumResidual::jacobian (viscoroll/line/line_spectrum.hpp), the semi-analytic
-// Jacobian of the spectrum's line equations (docs/theory.md (S17)), against central differences
-// of the residual itself, and of spectrum_strip's slopes (SpectrumStripSlopes) against central
-// differences of the strip.
+// Tests of LineResidual::jacobian for a spectrum (viscoroll/line/line_residual.hpp), the
+// semi-analytic Jacobian of the spectrum's line equations (docs/theory.md (S17)), against central
+// differences of the residual itself, and of spectrum_strip's slopes (SpectrumStripSlopes) against
+// central differences of the strip.
 //
 // Scene: the paper's proportions (C1 = 1, C2/C1 = (ln 20 - 1)/25), a three-term creep spectrum
 // (f, tau) = (2, 0.05), (3, 0.5), (4, 5) at speeds 0.3, 1 and 4 (every term a line term at the
@@ -14,7 +14,7 @@
 #include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/line/detail/spectrum_memory.hpp>
 #include <viscoroll/line/line_node_rule.hpp>
-#include <viscoroll/line/line_spectrum.hpp>
+#include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
@@ -26,7 +26,7 @@ namespace test_line_spectrum_jacobian {
 
 namespace {
 
-using Residual = viscoroll::LineSpectrumResidual<double, viscoroll::GaussLegendre<double, 12>>;
+using Residual = viscoroll::LineResidual<double, viscoroll::GaussLegendre<double, 12>>;
 
 /// Largest relative column error of the Jacobian against central differences, at a contact
 /// narrower than the static one, offset from the expansions' leading terms by `offset`.
@@ -34,9 +34,17 @@ double worst_column_error(double v, int terms, double offset) {
   const double c1 = 1, c2 = (std::log(20.0) - 1) / 25;
   const auto lengths = viscoroll_test::three_term_lengths(v);
   const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
-  const viscoroll::LineSpectrumProblem<double> problem{
-      c1, c2, lengths, slow.a0, slow.l, c1 * slow.a0 * slow.a0 * slow.l / 3};
+  const viscoroll::LineProblem<double> problem{.c1 = c1,
+                                               .c2 = c2,
+                                               .vtau = 0,
+                                               .f = 0,
+                                               .a_ref = slow.a0,
+                                               .l_ref = slow.l,
+                                               .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
+                                               .lengths = lengths};
   const Residual res(problem, terms);
+  REQUIRE(res.spectrum());
+  REQUIRE(res.unknowns() == 4 * terms + 5);
   const double ratio = 0.7;
   const viscoroll::LineShape<double> shape{slow.a0, slow.l * ratio, {std::log(ratio)}, {0.1}};
   const viscoroll::LineSpectrumMoments<double> moments{{0.05}, {0.02}};

@@ -1,15 +1,14 @@
 // The semi-analytic Jacobians of the asymmetric line residuals (docs/theory.md section 16,
 // "Status": the odd parts' columns t times the even ones', the centre's through h'(y) only) against
-// central differences of the residuals, for LineResidual and LineSpectrumResidual with a drop that
-// is not even (h = C2 y^2/2 + theta y), at iterates with odd parts and a centre off zero. The
-// tolerances are the symmetric residuals' (tests/line/line_jacobian.test.cpp,
+// central differences of the residuals, for LineResidual over one term and over a spectrum with a
+// drop that is not even (h = C2 y^2/2 + theta y), at iterates with odd parts and a centre off zero.
+// The tolerances are the symmetric residuals' (tests/line/line_jacobian.test.cpp,
 // line_spectrum_jacobian.test.cpp): the central difference's own error.
 #include <Eigen/Core>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 #include <viscoroll/line/line_residual.hpp>
-#include <viscoroll/line/line_spectrum.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 
@@ -84,11 +83,17 @@ TEST_CASE("line tilt: the asymmetric spectrum residual's Jacobian against centra
   for (const double v : {0.3, 1.0, 4.0}) {
     const auto lengths = viscoroll_test::three_term_lengths(v);
     const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
-    const viscoroll::LineSpectrumProblem<double> problem{
-        c1, c2, lengths, slow.a0, slow.l, c1 * slow.a0 * slow.a0 * slow.l / 3};
+    const viscoroll::LineProblem<double> problem{.c1 = c1,
+                                                 .c2 = c2,
+                                                 .vtau = 0,
+                                                 .f = 0,
+                                                 .a_ref = slow.a0,
+                                                 .l_ref = slow.l,
+                                                 .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
+                                                 .lengths = lengths};
     for (const int terms : {2, 4}) {
-      const viscoroll::LineSpectrumResidual<double, Rule, TiltedDrop> res(
-          problem, terms, viscoroll::LineBasis::t_squared, 0.0, TiltedDrop{theta}, true);
+      const viscoroll::LineResidual<double, Rule, viscoroll::ExteriorLeadingEdge, TiltedDrop> res(
+          problem, terms, viscoroll::LineBasis::t_squared, 1, 0.0, TiltedDrop{theta}, true);
       REQUIRE(res.unknowns() == 8 * terms + 9);
       REQUIRE(res.equations() == res.unknowns());
       viscoroll::LineSpectrumMoments<double> moments{{0.05}, {0.02}};

@@ -1,6 +1,6 @@
 // The three-term creep spectrum of the line residuals' Jacobian tests (tests/line/
 // line_spectrum_jacobian.test.cpp, line_tilt_jacobian.test.cpp): (f, tau) = (2, 0.05), (3, 0.5),
-// (4, 5) at speed v, as the lengths LineSpectrumResidual takes.
+// (4, 5) at speed v, as the lengths of a spectrum's LineProblem.
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// viscoroll: the residual assembly of the line solver.
+// viscoroll: the residual assembly of the line solver, for every material.
 //
 // Panek & Kalker (1980), Sections 5 and 7. The unknowns are the coefficients of a(y) and b(y)
 // (line_shape.hpp), ln l and d; the equations, at collocation points y_i = l t_i, are
@@ -18,8 +18,19 @@
 // (LineNodeRule, docs/theory.md section 7) of the differences F(y') - F(y), taken by the
 // operators of line_operators.hpp: near_field_strip for (34), exterior_right for (L6).
 //
-// LineResidual::jacobian is defined in line/detail/line_residual_jacobian.hpp, included at the end
-// of this header.
+// One memory term is the fast path: its strip is closed-form in a and b ((32)-(36), (46)), so the
+// strip functions are pointwise functions of the unknowns. A spectrum of M >= 2 terms
+// (docs/theory.md section 14, (S11)-(S15)) has M leading-edge conditions per strip, one per
+// retardation length lambda_k = V tau_k, whose right sides are (L6) at lambda_k of
+// Q_k = F0 - F1/lambda_k (S12); (34) gains the spectrum's constant (S13). The strip's unknowns
+// are eliminated at each point by its linear system (core/spectrum_strip.hpp), and two more
+// functions of y join the unknowns, gamma = G0/a^2 and the strip's centroid kappa, which carry F0
+// and F1 to the line integrals (S14); at each point the strip's b, G0/a^2 and centroid must equal
+// the expanded ones. Shape, collocation, node rule, (34) and the load are the same for both.
+//
+// The closed-form path's Jacobian is in line/detail/line_residual_jacobian.hpp, the spectrum's
+// residual and Jacobian in line/detail/line_residual_spectrum.hpp, both included at the end of
+// this header.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,9 +38,11 @@
 #include <cmath>
 #include <concepts>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 #include <viscoroll/core/concepts.hpp>
+#include <viscoroll/core/spectrum_strip.hpp>
 #include <viscoroll/core/strip.hpp>
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/line_node_rule.hpp>
@@ -40,7 +53,9 @@
 
 namespace viscoroll {
 
-/// The scene's constants seen by the residual (V tau > 0, f > 0).
+/// The scene's constants seen by the residual, lengths in one unit. One memory term: V tau > 0
+/// and f > 0, `lengths` empty. A spectrum: `lengths` at the scene's speed (its lambda_k = V tau_k,
+/// mu_i = V rho_i and creep ratio F), vtau and f unused.
 template <RealScalar Real>
 struct LineProblem {
   /// C1, C2, V tau and f of the scene.
@@ -49,7 +64,8 @@ struct LineProblem {
   ///@}
   Real a_ref;        ///< long-term static half width at y = 0 (scale of a, b)
   Real l_ref;        ///< long-term static half length (scale of l)
-  Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52)
+  Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52); (1 + F) c P for a spectrum
+  SpectrumLengths<Real> lengths{};  ///< a spectrum's lengths; empty for one term
 };
 
 /// Leading-edge policy of LineResidual: the right side of the leading-edge condition in the
@@ -78,12 +94,11 @@ struct ExteriorLeadingEdge {
   }
 };
 
-/// The roller's drop h(y) along its axis in (34), a policy of the line residuals (LineResidual,
-/// LineSpectrumResidual): a D provides `Real drop(const Problem&, Real y) const` and
-/// `Real drop_slope(const Problem&, Real y) const`, h(y) and h'(y) in the residual's units inside
-/// the contact; h even in y unless the residual is asymmetric (the residuals' `asymmetric`:
-/// else they collocate on y > 0); Problem the residual's constants (LineProblem,
-/// LineSpectrumProblem). Models: ParabolicDrop (the paper's Eq. 27, from the problem's c2) and
+/// The roller's drop h(y) along its axis in (34), a policy of LineResidual: a D provides
+/// `Real drop(const Problem&, Real y) const` and `Real drop_slope(const Problem&, Real y) const`,
+/// h(y) and h'(y) in the residual's units inside the contact; h even in y unless the residual is
+/// asymmetric (its `asymmetric`: else it collocates on y > 0); Problem the residual's constants
+/// (LineProblem). Models: ParabolicDrop (the paper's Eq. 27, from the problem's c2) and
 /// ProfileDrop (line_profile.hpp, a RollerProfile).
 template <class D, class Real, class Problem = LineProblem<Real>>
 concept RollerDrop = requires(const D& d, const Problem& p, Real y) {
@@ -106,7 +121,10 @@ struct ParabolicDrop {
 };
 
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,
-/// `LeadingEdge` a LeadingEdgeCondition, `Drop` a RollerDrop.
+/// `LeadingEdge` a LeadingEdgeCondition, `Drop` a RollerDrop. The problem decides the material:
+/// one memory term (the closed-form strips, 2N + 3 unknowns) or a spectrum (its `lengths` set:
+/// the strips' moments are unknowns too, 4N + 5; ExteriorLeadingEdge and oversampling 1 only).
+/// A least-squares problem for numerics::levenberg_marquardt, with a semi-analytic Jacobian.
 template <RealScalar Real, class Quadrature, class LeadingEdge = ExteriorLeadingEdge,
           class Drop = ParabolicDrop>
 requires NodalQuadratureRule<Quadrature, Real> &&
@@ -122,34 +140,42 @@ class LineResidual {
 
   /// terms: N >= 1; ln a has N coefficients, b has N + 1, collocation at N + 1 points. The count
   /// balances each block: (34) at N + 1 points and the load (47) fix the N coefficients of a, l and
-  /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b.
+  /// d; the leading-edge condition at N + 1 points fixes the N + 1 coefficients of b (a spectrum's
+  /// b, G0/a^2 and centroid at N + 1 points the N + 1 coefficients of b, gamma and kappa).
   /// oversampling k >= 1: k (N + 1) points instead, an overdetermined system whose least-squares
-  /// solution is the paper's (Section 7; docs/theory.md section 10).
+  /// solution is the paper's (Section 7; docs/theory.md section 10); 1 for a spectrum.
   /// quadrature_tolerance: the relative accuracy of every integral (LineNodeRule); 0, the default,
   /// the scalar's epsilon (every integral exact to rounding).
   /// drop: the roller's h(y) (the paper's C2 y^2/2 by default).
   /// asymmetric: the contact [c - l, c + l] of a roller whose drop is not even (a tilt;
-  /// docs/theory.md (RP7)): a(y), b(y) take odd parts of as many coefficients as their even parts,
-  /// the centre c is an unknown, and the equations are collocated at the points +-t_i; the even
-  /// unknowns keep their places, the odd ones follow (unknowns()).
+  /// docs/theory.md (RP7)): every series takes an odd part of as many coefficients as its even
+  /// part, the centre c is an unknown, and the equations are collocated at the points +-t_i; the
+  /// even unknowns keep their places, the odd ones follow (unknowns()).
   LineResidual(LineProblem<Real> problem, int terms, LineBasis basis = LineBasis::t_squared,
                int oversampling = 1, Real quadrature_tolerance = Real(0), Drop drop = Drop{},
                bool asymmetric = false)
-      : p_(problem),
+      : p_(std::move(problem)),
         drop_(std::move(drop)),
         n_(terms),
         oversampling_(oversampling),
         asymmetric_(asymmetric),
-        basis_(basis),
-        scale_(basis == LineBasis::s_mapped
-                   ? LineShape<Real>::mapped_scale(problem.vtau, problem.f, problem.a_ref)
-                   : Real(0)),
-        rule_(basis_, scale_, terms, problem.vtau, problem.f, quadrature_tolerance) {
+        spectrum_(!p_.lengths.retardation.empty()),
+        basis_(basis) {
     detail::require(terms >= 1 && terms <= 64, "terms", terms, "1 <= terms <= 64");
     detail::require(oversampling >= 1 && oversampling <= 8, "oversampling", oversampling,
                     "1 <= oversampling <= 8");
     using std::cos;
     using std::sqrt;
+    if (spectrum_) {
+      detail::require(oversampling == 1, "oversampling", oversampling, "1 for a spectrum");
+      detail::require(std::same_as<LeadingEdge, ExteriorLeadingEdge>, "leading edge", 0,
+                      "ExteriorLeadingEdge, (L6), for a spectrum");
+      init_spectrum(quadrature_tolerance);
+    } else {
+      scale_ = basis == LineBasis::s_mapped ? LineShape<Real>::mapped_scale(p_.vtau, p_.f, p_.a_ref)
+                                            : Real(0);
+      rule_.emplace(basis_, scale_, terms, p_.vtau, p_.f, quadrature_tolerance);
+    }
     const Real pi = boost::math::constants::pi<Real>();
     const int m = (n_ + 1) * oversampling_;
     for (int i = 1; i <= m; ++i) {
@@ -171,77 +197,107 @@ class LineResidual {
   int oversampling() const { return oversampling_; }
   /// Whether the contact has odd parts and a centre.
   bool asymmetric() const { return asymmetric_; }
-  /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, ln(l / l_ref), d / (C1 a_ref^2); for an
-  /// asymmetric contact then gamma_0..gamma_{N-1}, delta_0..delta_N (the odd parts,
-  /// line_shape.hpp) and c / l_ref (the centre).
-  int unknowns() const { return 2 * n_ + 3 + (asymmetric_ ? 2 * n_ + 2 : 0); }
-  /// Equations: (34) and the leading-edge condition at each point, then the load (47).
-  int equations() const { return 2 * points() + 1; }
+  /// Whether the problem is a spectrum's (the strips' moments are unknowns).
+  bool spectrum() const { return spectrum_; }
+  /// Unknowns: alpha_0..alpha_{N-1}, beta_0..beta_N, for a spectrum gamma_0..gamma_N and
+  /// kappa_0..kappa_N, then ln(l / l_ref), d / (C1 a_ref^2); for an asymmetric contact then the
+  /// odd parts' coefficients (N, N + 1, and N + 1, N + 1 for a spectrum, line_shape.hpp) and
+  /// c / l_ref (the centre).
+  int unknowns() const { return even_unknowns() + (asymmetric_ ? even_unknowns() - 1 : 0); }
+  /// Equations: at each point (34) and the leading-edge condition (a spectrum's (34) and its
+  /// strip's b, G0/a^2 and centroid against the expansions), then the load (47).
+  int equations() const { return (spectrum_ ? 4 : 2) * points() + 1; }
   /// The collocation points t_i = (y - c)/l (+-t_i for an asymmetric contact).
   const std::vector<Real>& collocation() const { return t_; }
   /// The scene's constants.
   const LineProblem<Real>& problem() const { return p_; }
+  /// A spectrum's lambda_k / a_ref below which a term's leading-edge condition is the strip's
+  /// own (S16).
+  static Real slow_fraction() { return Real(1) / 10; }
+  /// A spectrum's terms whose leading-edge condition carries the line integrals (S12).
+  int line_terms() const { return int(line_.size()); }
 
   /// The contact's shape a(y), b(y) and l of the unknowns x.
   LineShape<Real> shape(const Vector& x) const {
     using std::exp;
-    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[2 * n_ + 1]), {}, {}, basis_, scale_};
+    LineShape<Real> s{p_.a_ref, p_.l_ref * exp(x[log_length()]), {}, {}, basis_, scale_};
     for (int k = 0; k < n_; ++k) s.alpha.push_back(x[k]);
     for (int k = 0; k <= n_; ++k) s.beta.push_back(x[n_ + k]);
     if (asymmetric_) {
-      for (int k = 0; k < n_; ++k) s.alpha_odd.push_back(x[odd_alpha() + k]);
-      for (int k = 0; k <= n_; ++k) s.beta_odd.push_back(x[odd_beta() + k]);
+      for (int k = 0; k < n_; ++k) s.alpha_odd.push_back(x[odd() + k]);
+      for (int k = 0; k <= n_; ++k) s.beta_odd.push_back(x[odd() + n_ + k]);
       s.centre = x[centre_index()] * p_.l_ref;
     }
     return s;
   }
-  /// The penetration d of the unknowns x.
-  Real penetration(const Vector& x) const { return x[2 * n_ + 2] * p_.c1 * p_.a_ref * p_.a_ref; }
-
-  /// The unknowns of a shape and penetration.
-  Vector pack(const LineShape<Real>& given, Real d) const {
-    using std::log;
-    // Same variable and no more terms: pad with zeros (exact); otherwise re-expand.
-    const bool pad = given.basis == basis_ && given.scale == scale_ &&
-                     int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1 &&
-                     int(given.alpha_odd.size()) <= n_ && int(given.beta_odd.size()) <= n_ + 1;
-    const LineShape<Real> s = pad ? given : given.reexpanded(basis_, n_, scale_);
-    Vector x = Vector::Zero(unknowns());
-    for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
-    for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
-    x[2 * n_ + 1] = log(s.l / p_.l_ref);
-    x[2 * n_ + 2] = d / (p_.c1 * p_.a_ref * p_.a_ref);
-    if (asymmetric_) {
-      for (int k = 0; k < n_ && k < int(s.alpha_odd.size()); ++k)
-        x[odd_alpha() + k] = s.alpha_odd[k];
-      for (int k = 0; k <= n_ && k < int(s.beta_odd.size()); ++k) x[odd_beta() + k] = s.beta_odd[k];
-      x[centre_index()] = s.centre / p_.l_ref;
+  /// A spectrum's series gamma and kappa of the unknowns x (empty for one term).
+  LineSpectrumMoments<Real> moments(const Vector& x) const {
+    LineSpectrumMoments<Real> m;
+    if (!spectrum_) return m;
+    for (int k = 0; k <= n_; ++k) {
+      m.gamma.push_back(x[2 * n_ + 1 + k]);
+      m.kappa.push_back(x[3 * n_ + 2 + k]);
+      if (asymmetric_) {
+        m.gamma_odd.push_back(x[odd() + 2 * n_ + 1 + k]);
+        m.kappa_odd.push_back(x[odd() + 3 * n_ + 2 + k]);
+      }
     }
-    return x;
+    return m;
   }
+  /// The penetration d of the unknowns x.
+  Real penetration(const Vector& x) const {
+    return x[log_length() + 1] * p_.c1 * p_.a_ref * p_.a_ref;
+  }
+
+  /// The unknowns of a shape and penetration (a spectrum's moments zero).
+  Vector pack(const LineShape<Real>& given, Real d) const { return pack(given, {}, d); }
+  /// The unknowns of a shape, a spectrum's moments (ignored for one term) and penetration. Series
+  /// in the same variable with no more terms are padded with zeros (exact), a spectrum's longer
+  /// ones truncated, others re-expanded; a shape in another unit a_ref (a seed whose active terms
+  /// differ) is converted to this one.
+  Vector pack(const LineShape<Real>& given, const LineSpectrumMoments<Real>& mo, Real d) const;
 
   /// Residual r(x), scaled: (34) by C1 a_ref^2 (plus V/a_ref times the leading-edge row, below),
   /// the leading-edge condition by its derivative with respect to b (so that it reads as an error
-  /// in b / a_ref), the load by its target. Returns false
+  /// in b / a_ref), a spectrum's b and centroid by a_ref, the load by its target. Returns false
   /// (and leaves r unspecified) where the equations are undefined: a leading edge x0 = a + b <= 0
   /// or a non-finite value.
   bool operator()(const Vector& x, Vector& r) const;
 
-  /// int_{c-l}^{c+l} F0 dy (Eq. 47), on the rule's nodes over the contact (LineNodeRule::load).
-  Real load(const LineShape<Real>& s) const {
+  /// int_{c-l}^{c+l} F0 dy (Eq. 47), on the rule's nodes over the contact (LineNodeRule::load);
+  /// a spectrum's F0 from its moments.
+  Real load(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo = {}) const {
     std::vector<Real> nodes, weights;
-    rule_.load(s, asymmetric_, nodes, weights);
+    rule_->load(s, asymmetric_, nodes, weights);
     Real sum = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j)
-      sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
+      sum += weights[j] *
+             (spectrum_ ? functions(s, mo, nodes[j]).f0
+                        : strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0);
     return sum;
   }
 
-  /// (34) and the leading-edge residual at one y, |y - c| < l (scaled as in operator()).
+  /// A spectrum's int F0 (b + kappa) dy / int F0 dy over the contact: the pressure's centroid
+  /// from the axis, chi / C1 (Eq. 51 strip by strip, (S10), (S15)).
+  Real centroid(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const;
+
+  /// One term: (34) and the leading-edge residual at one y, |y - c| < l (scaled as in
+  /// operator()).
   bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle) const {
     PointWork work;
     return at_point(s, d, y, r34, rle, work);
   }
+
+  /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/theory.md section 6; a
+  /// spectrum's (S17)): the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions
+  /// (36), (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
+  /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), or through
+  /// a spectrum's strip (SpectrumStripSlopes), at nodes held fixed in t = y/l; the kernels'
+  /// dependence on the leading edge x0 = a + b and on l is differentiated in the same pass as the
+  /// kernels (exterior_right's ExteriorSlopes). For the (L6) form only; returns false where
+  /// operator() would, and r is operator()'s bit for bit.
+  bool jacobian(const Vector& x, Vector& r,
+                Matrix& jac) const requires std::same_as<LeadingEdge, ExteriorLeadingEdge>;
 
  private:
   /// The storage of one point's node set and differences, reused from point to point.
@@ -250,140 +306,141 @@ class LineResidual {
     std::vector<Real> df0, dq;
   };
 
+  /// One term: (34) and the leading-edge residual at y.
   bool at_point(const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle,
-                PointWork& work) const {
-    const Real c1 = p_.c1;
-    const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
-    if (!(here.a > 0) || !(here.a + here.b > 0)) return false;
-    LineNodes<Real>& nd = work.nd;
-    rule_.point(s, y, here.a + here.b, nd);
-    std::vector<Real>& df0 = work.df0;
-    std::vector<Real>& dq = work.dq;
-    df0.resize(nd.yp.size());
-    dq.resize(nd.yp.size());
-    for (std::size_t j = 0; j < nd.yp.size(); ++j) {
-      const auto there = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), p_.vtau, p_.f);
-      df0[j] = there.f0 - here.f0;
-      dq[j] = there.q - here.q;
-    }
-    const Real right =
-        LeadingEdge::template right<Quadrature>(p_, s, y, here.a + here.b, nd, dq, here.q);
-    point_rows(d, y, here, nd, df0, right, r34, rle);
-    return true;
-  }
+                PointWork& work) const;
 
- public:
-  /// The residual r(x) and its Jacobian J = dr/dx (semi-analytic, docs/theory.md section 6):
-  /// the chain rule through a(y), b(y) (line_shape.hpp) and the strip functions (36),
-  /// (33), (46), with d(I1/I0)/dx = 1 - (I1/I0)/x - (I1/I0)^2 (DLMF 10.29.2) and
-  /// d(e^z K0)/dz = e^z (K0 - K1), d(e^z K1)/dz = e^z (K1 - K0 - K1/z) (DLMF 10.29.3), at nodes
-  /// held fixed in t = y/l; the kernels' dependence on the leading edge x0 = a + b and on l is
-  /// differentiated in the same pass as the kernels (exterior_right's ExteriorSlopes). For the
-  /// (L6) form only; returns false where operator() would.
-  bool jacobian(const Vector& x, Vector& r,
-                Matrix& jac) const requires std::same_as<LeadingEdge, ExteriorLeadingEdge>;
-
- private:
   /// e^z K0(z), e^z K1(z) at z = a/V and the leading-edge row's scale C1 a (e^z K1 + r_i e^z K0),
   /// its slope in b at fixed a.
   struct EdgeTerms {
     Real k0, k1, slope;
   };
 
-  /// (34) and the leading-edge row at one point from the finite-part differences df0_j and the
-  /// right side of the leading-edge condition; returns the terms of the row's left side.
+  /// One term: (34) and the leading-edge row at one point from the finite-part differences df0_j
+  /// and the right side of the leading-edge condition; returns the terms of the row's left side.
   EdgeTerms point_rows(Real d, Real y, const StripFunctions<Real>& here, const LineNodes<Real>& nd,
-                       const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const {
-    const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
-    // (34), scaled by C1 a_ref^2.
-    const Real lhs34 = near_field_strip(nd, df0, here.f0, a);
-    const Real rhs34 = -c1 * a * a / 4 - c1 * b * (b - 2 * v) / 2 - drop_.drop(p_, y) + d;
-    r34 = (lhs34 - rhs34) / (c1 * p_.a_ref * p_.a_ref);
-    // Leading-edge condition.
-    const Real z = a / v;
-    const Real k0 = special::bessel_k0_scaled(z), k1 = special::bessel_k1_scaled(z);
-    const Real bessel = c1 * (a * b * k1 - here.g * k0);  // C1 e^z {a b K1 - G K0}, Eq. (42)
-    const Real r_i = special::bessel_i1_over_i0_fast(strip_alpha(a, v, p_.f));
-    const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
-    rle = (bessel - right) / (slope * p_.a_ref);
-    return {k0, k1, slope};
-  }
+                       const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const;
 
-  /// G (36), F0 (33), Q (46) (as strip_functions) with their partial derivatives in a and b,
-  /// and I1/I0 and its derivative; all zero for a <= 0 (beyond the ends).
+  /// One term: G (36), F0 (33), Q (46) (as strip_functions) with their partial derivatives in a
+  /// and b, and I1/I0 and its derivative; all zero for a <= 0 (beyond the ends).
   struct StripDerivatives {
     StripFunctions<Real> value;
     Real g_a, g_b, f0_a, f0_b, q_a, q_b, ri, ri_x;
   };
-  StripDerivatives strip_derivatives(Real a, Real b) const {
-    using std::sqrt;
-    const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
-    if (!(a > 0)) return {{Real(0), b, Real(0), Real(0), Real(0)}, 0, 0, 0, 0, 0, 0, 0, 0};
-    const Real alpha = strip_alpha(a, v, f);
-    const Real ri = special::bessel_i1_over_i0_fast(alpha);  // I1/I0
-    // DLMF 10.29.2: (I1/I0)' = 1 - (I1/I0)/x - (I1/I0)^2; 1/2 - 3x^2/16 + ... at 0.
-    const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())
-                          ? Real(0.5)
-                          : Real(1 - ri / alpha - ri * ri);
-    const StripFunctions<Real> value = strip_functions_from_ratio(c1, a, b, v, f, ri);
-    const Real k = v * f / (1 + f) - b, g = value.g;
-    const Real g_a = k * (ri + alpha * ri_x), g_b = -a * ri;
-    return {value,
-            g_a,
-            g_b,
-            c1 * (a / 2 + g_a / 2),
-            c1 * g_b / 2,
-            c1 * g_a * (v - b) / (2 * v),
-            c1 * (g_b * (v - b) - g) / (2 * v),
-            ri,
-            ri_x};
-  }
+  StripDerivatives strip_derivatives(Real a, Real b) const;
 
-  /// d a(y)/d x and d b(y)/d x at y for fixed t = (y - c)/l (zero in ln l, d and c).
-  void shape_gradient(const LineShape<Real>& s, Real y, Real a, Vector& da, Vector& db) const {
-    da.setZero(unknowns());
-    db.setZero(unknowns());
-    const Real w = s.one_minus_t2(y);
-    const Real u = LineShape<Real>::coordinate(basis_, scale_, w > 0 ? w : Real(0));
-    const Real t = asymmetric_ ? s.t_at(y) : Real(0);
-    Real tkm1 = 1, tk = u;  // T_0, T_1
-    for (int k = 0; k <= n_; ++k) {
-      const Real tval = k == 0 ? Real(1) : tk;
-      if (k < n_) da[k] = a * tval;
-      db[n_ + k] = p_.a_ref * tval;
-      if (asymmetric_) {
-        if (k < n_) da[odd_alpha() + k] = a * t * tval;
-        db[odd_beta() + k] = p_.a_ref * t * tval;
-      }
-      if (k >= 1) {
-        const Real next = 2 * u * tk - tkm1;
-        tkm1 = tk;
-        tk = next;
-      }
-    }
-  }
+  /// One term: d a(y)/d x and d b(y)/d x at y for fixed t = (y - c)/l (zero in ln l, d and c).
+  void shape_gradient(const LineShape<Real>& s, Real y, Real a, Vector& da, Vector& db) const;
 
-  /// Where the asymmetric contact's unknowns sit: gamma, delta, c / l_ref.
-  int odd_alpha() const { return 2 * n_ + 3; }
-  int odd_beta() const { return 3 * n_ + 3; }
-  int centre_index() const { return 4 * n_ + 4; }
+  /// A spectrum's line functions at y from the expansions: a, b, gamma = G0/a^2, the centroid
+  /// kappa of the strip and F0 = C1 a^2 (1/4 + gamma/2) (33) (all 0 but b where a = 0).
+  struct Functions {
+    Real a, b, gamma, kappa, f0;
+  };
+  Functions functions(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y) const;
+  /// A spectrum's Q_k = F0 (1 - (b + kappa)/lambda_k) of term k (S14).
+  Real q(const Functions& f, std::size_t k) const {
+    return f.f0 * (1 - (f.b + f.kappa) / p_.lengths.retardation[k]);
+  }
+  /// A spectrum's scale, node rule and line terms (line/detail/line_residual_spectrum.hpp).
+  void init_spectrum(Real tolerance);
+  /// A spectrum's r(x) and, with `jac`, its Jacobian.
+  bool spectrum_evaluate(const Vector& x, Vector& r, Matrix* jac) const;
+  /// The rows d right_k / dx of a spectrum's line terms at one point (S17): from the slopes of
+  /// (L6) and, at the point's nodes, a, F0, b + kappa, the Chebyshev values tv, and at the point
+  /// its functions, Q_k (qs) and Chebyshev values ti.
+  void spectrum_right_slopes(const Functions& here, const std::vector<ExteriorSlopes<Real>>& slopes,
+                             const std::vector<Real>& as, const std::vector<Real>& f0s,
+                             const std::vector<Real>& bks, const std::vector<Real>& qs,
+                             const std::vector<Real>& tv, const Real* ti, Matrix& dright) const;
+  /// A spectrum's load equation, row 4 m, and with `jac` its row of the Jacobian.
+  void spectrum_load_row(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Vector& r,
+                         Matrix* jac) const;
+  /// T_0(u) ... T_N(u) into t (N + 1 values), then, for an asymmetric contact, t_y times them.
+  void chebyshev_values(Real u, Real* t, Real t_y = 0) const;
+  /// Values per abscissa in chebyshev_values: N + 1, twice that for an asymmetric contact.
+  int series_values() const { return (n_ + 1) * (asymmetric_ ? 2 : 1); }
+  /// Adds to row `row` of jac the derivative of a function g(a, b, gamma, kappa) at one abscissa
+  /// with the Chebyshev values t, given dg/d ln a (ga), dg/db (gb), dg/dgamma (gg), dg/dkappa
+  /// (gk), each times `scale`.
+  void add_series_row(Matrix& jac, int row, const Real* t, Real ga, Real gb, Real gg, Real gk,
+                      Real scale) const;
+
+  /// The unknowns of the even parts: 2N + 3, 4N + 5 for a spectrum.
+  int even_unknowns() const { return spectrum_ ? 4 * n_ + 5 : 2 * n_ + 3; }
+  /// Where ln(l / l_ref) sits (d / (C1 a_ref^2) follows it).
+  int log_length() const { return even_unknowns() - 2; }
+  /// Where the asymmetric contact's odd parts start, and c / l_ref.
+  int odd() const { return even_unknowns(); }
+  int centre_index() const { return 2 * even_unknowns() - 2; }
 
   LineProblem<Real> p_;
   Drop drop_;
   int n_;
   int oversampling_;
   bool asymmetric_ = false;
+  bool spectrum_ = false;
   LineBasis basis_;
-  Real scale_;  ///< e of LineBasis::s_mapped, else 0
-  LineNodeRule<Real, Quadrature> rule_;
+  Real scale_ = 0;  ///< e of LineBasis::s_mapped, else 0
+  std::optional<LineNodeRule<Real, Quadrature>> rule_;
   std::vector<Real> t_;
+  Real lambda_sum_ = 0;            ///< a spectrum's sum of lambda_k
+  std::vector<bool> line_term_;    ///< whether term k is a line term (S12)
+  std::vector<std::size_t> line_;  ///< the indices of the line terms
+  std::vector<Real> line_lambda_;  ///< their retardation lengths
 };
+
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
+requires NodalQuadratureRule<Quadrature, Real> &&
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::pack(const LineShape<Real>& given,
+                                                             const LineSpectrumMoments<Real>& mo,
+                                                             Real d) const -> Vector {
+  using std::log;
+  const bool same = given.basis == basis_ && given.scale == scale_;
+  const bool fits = int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1 &&
+                    int(given.alpha_odd.size()) <= n_ && int(given.beta_odd.size()) <= n_ + 1;
+  LineShape<Real> s = same && (fits || spectrum_) ? given : given.reexpanded(basis_, n_, scale_);
+  // A shape in another unit a_ref: the same a(y), b(y) (exact where the units agree).
+  const Real ratio = s.a_ref / p_.a_ref;
+  if (ratio != 1) {
+    if (s.alpha.empty()) s.alpha.push_back(Real(0));
+    s.alpha[0] += log(ratio);
+    for (Real& b : s.beta) b *= ratio;
+    for (Real& b : s.beta_odd) b *= ratio;
+  }
+  Vector x = Vector::Zero(unknowns());
+  for (int k = 0; k < n_ && k < int(s.alpha.size()); ++k) x[k] = s.alpha[k];
+  for (int k = 0; k <= n_ && k < int(s.beta.size()); ++k) x[n_ + k] = s.beta[k];
+  x[log_length()] = log(s.l / p_.l_ref);
+  x[log_length() + 1] = d / (p_.c1 * p_.a_ref * p_.a_ref);
+  if (asymmetric_) {
+    const int o = odd();
+    for (int k = 0; k < n_ && k < int(s.alpha_odd.size()); ++k) x[o + k] = s.alpha_odd[k];
+    for (int k = 0; k <= n_ && k < int(s.beta_odd.size()); ++k) x[o + n_ + k] = s.beta_odd[k];
+    x[centre_index()] = s.centre / p_.l_ref;
+  }
+  if (spectrum_) {
+    for (int k = 0; k <= n_ && k < int(mo.gamma.size()); ++k) x[2 * n_ + 1 + k] = mo.gamma[k];
+    for (int k = 0; k <= n_ && k < int(mo.kappa.size()); ++k)
+      x[3 * n_ + 2 + k] = mo.kappa[k] * ratio;
+    if (asymmetric_) {
+      const int o = odd();
+      for (int k = 0; k <= n_ && k < int(mo.gamma_odd.size()); ++k)
+        x[o + 2 * n_ + 1 + k] = mo.gamma_odd[k];
+      for (int k = 0; k <= n_ && k < int(mo.kappa_odd.size()); ++k)
+        x[o + 3 * n_ + 2 + k] = mo.kappa_odd[k] * ratio;
+    }
+  }
+  return x;
+}
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
 requires NodalQuadratureRule<Quadrature, Real> &&
     LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
 auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector& x, Vector& r) const
     -> bool {
+  if (spectrum_) return spectrum_evaluate(x, r, nullptr);
   r.resize(equations());
   const LineShape<Real> s = shape(x);
   const Real d = penetration(x);
@@ -408,6 +465,7 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector&
 }  // namespace viscoroll
 
 #include <viscoroll/line/detail/line_residual_jacobian.hpp>
+#include <viscoroll/line/detail/line_residual_spectrum.hpp>
 
 namespace viscoroll {
 

@@ -187,4 +187,34 @@ struct LineShape {
   }
 };
 
+/// The functions gamma(y) = G0/a^2 and kappa(y)/a_ref of the spectrum's line solution,
+/// Chebyshev series in u = 2 t^2 - 1, t = (y - c)/l (docs/theory.md (S14)): even, plus for an
+/// asymmetric contact the odd parts t sum gamma_odd_k T_k(u), t sum kappa_odd_k T_k(u) (as
+/// LineShape's; empty otherwise).
+template <RealScalar Real>
+struct LineSpectrumMoments {
+  /// The even Chebyshev coefficients of gamma = G0/a^2 and kappa/a_ref.
+  ///@{
+  std::vector<Real> gamma, kappa;
+  ///@}
+  /// The odd parts' coefficients (empty for a symmetric contact).
+  ///@{
+  std::vector<Real> gamma_odd{}, kappa_odd{};
+  ///@}
+  /// The even part of gamma at u.
+  Real gamma_at(Real u) const { return LineShape<Real>::chebyshev(gamma, u); }
+  /// The even part of kappa/a_ref at u.
+  Real kappa_at(Real u) const { return LineShape<Real>::chebyshev(kappa, u); }
+  /// gamma and kappa/a_ref at u with their odd parts at t.
+  Real gamma_at(Real u, Real t) const {
+    if (gamma_odd.empty()) return gamma_at(u);
+    return gamma_at(u) + t * LineShape<Real>::chebyshev(gamma_odd, u);
+  }
+  /// kappa/a_ref at u with its odd part at t.
+  Real kappa_at(Real u, Real t) const {
+    if (kappa_odd.empty()) return kappa_at(u);
+    return kappa_at(u) + t * LineShape<Real>::chebyshev(kappa_odd, u);
+  }
+};
+
 }  // namespace viscoroll

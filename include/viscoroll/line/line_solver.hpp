@@ -51,7 +51,6 @@
 #include <viscoroll/line/line_scene.hpp>
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/line/line_solution.hpp>
-#include <viscoroll/line/line_spectrum.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/material/detail/prony_spectrum.hpp>
 #include <viscoroll/material/elastic.hpp>
@@ -67,7 +66,7 @@ namespace viscoroll {
 /// Solver of the line-contact equations over a scalar, a constitutive model and a nodal
 /// quadrature rule (applied on the graded panels of every line integral). A material with one
 /// memory term (SingleTimeModel) is the paper's theory; a spectrum of several terms is the theory
-/// of docs/theory.md section 14 (line/line_spectrum.hpp). Both give a LineSolution.
+/// of docs/theory.md section 14. Both go through one LineResidual and give a LineSolution.
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature = GaussLegendre<Real, 12>>
 requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule<Quadrature, Real>
 class LineSolver {
@@ -394,9 +393,9 @@ class LineSolver {
   /// scene's speed as the plane solver does (relaxed ones, V tau_k <= eps a0, folded into the
   /// compliance; not started ones, strip_is_glassy, dropped); none active: the static closed
   /// form of the remaining compliance; one: the standard linear solid (the paper's theory, the
-  /// same digits as LineSolver over that material); two or more: LineSpectrumResidual. Scene: a
-  /// LineScene (the paper's ellipsoid) or a LineProfileScene (a roller profile, whose
-  /// static contacts are static_profile_contact's and whose drop enters (34), (RP5)). `start`
+  /// same digits as LineSolver over that material); two or more: LineResidual with the spectrum's
+  /// lengths. Scene: a LineScene (the paper's ellipsoid) or a LineProfileScene (a roller profile,
+  /// whose static contacts are static_profile_contact's and whose drop enters (34), (RP5)). `start`
   /// seeds the iteration only where the one from the cold start stops short.
   template <class Scene>
   Solution solve_spectrum(const Scene& scene, const Solution* start) const

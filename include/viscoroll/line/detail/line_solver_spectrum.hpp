@@ -26,9 +26,9 @@
 #include <viscoroll/core/validate.hpp>
 #include <viscoroll/line/detail/line_iteration.hpp>
 #include <viscoroll/line/line_profile.hpp>
+#include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_solution.hpp>
 #include <viscoroll/line/line_solver.hpp>
-#include <viscoroll/line/line_spectrum.hpp>
 #include <viscoroll/line/static_line_contact.hpp>
 #include <viscoroll/line/static_profile_contact.hpp>
 #include <viscoroll/material/elastic.hpp>
@@ -60,7 +60,7 @@ struct LineSolver<Real, Material, Quadrature>::SpectrumRun {
   Real eff_load{};                ///< (1 + F') c_eff P
   Real eff_a0{};                  ///< a profile's eff a(0), in the caller's units
   std::optional<StaticProfileContact<Real>> eff_profile{};  ///< a profile's eff, caller's units
-  LineSpectrumProblem<Real> prob{};                         ///< the residual's constants
+  LineProblem<Real> prob{};                                 ///< the residual's constants
 };
 
 // solve_spectrum (documented at its declaration in line_solver.hpp): the steps below in order.
@@ -244,7 +244,14 @@ bool LineSolver<Real, Material, Quadrature>::spectrum_effective(SpectrumRun<Scen
     eff = {in_units.first.a_ref, in_units.first.l, in_units.second};
     load_target = times_power_of_two(eff_load, -(u.curvature + 3 * u.length));
   }
-  run.prob = {u.c1, u.c2, lengths, eff.a0, eff.l, load_target};
+  run.prob = {.c1 = u.c1,
+              .c2 = u.c2,
+              .vtau = Real(0),
+              .f = Real(0),
+              .a_ref = eff.a0,
+              .l_ref = eff.l,
+              .load_target = load_target,
+              .lengths = lengths};
   return true;
 }
 
@@ -316,7 +323,7 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_iterate(const SpectrumRun<
   const Real c_eff = run.c_eff;
   const bool asymmetric = run.asymmetric;
   const SpectrumLengths<Real>& lengths = run.conditioned.lengths;
-  const LineSpectrumProblem<Real>& prob = run.prob;
+  const LineProblem<Real>& prob = run.prob;
   Solution sol = run.base;
   LineShape<Real> shape;
   LineSpectrumMoments<Real> moments;
@@ -333,7 +340,9 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_iterate(const SpectrumRun<
       return ProfileDrop<std::remove_cvref_t<decltype(scene.roller)>>(scene.roller, u.length,
                                                                       u.curvature);
   }();
-  std::optional<LineSpectrumResidual<Real, Quadrature, std::remove_const_t<decltype(drop)>>> last;
+  std::optional<
+      LineResidual<Real, Quadrature, ExteriorLeadingEdge, std::remove_const_t<decltype(drop)>>>
+      last;
   Vector x;
   Matrix jac;                // Levenberg-Marquardt's Jacobian at its last iterate
   bool jac_at_root = false;  // whether jac is the Jacobian at the returned root
@@ -341,7 +350,7 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_iterate(const SpectrumRun<
   const std::vector<int> stages = detail::continuation_stages(options_.terms);
   for (std::size_t k = 0; k < stages.size(); ++k) {
     const int n = stages[k];
-    last.emplace(prob, n, LineBasis::t_squared, Real(options_.quadrature_tolerance), drop,
+    last.emplace(prob, n, LineBasis::t_squared, 1, Real(options_.quadrature_tolerance), drop,
                  asymmetric);
     x = last->pack(shape, moments, d);
     r.resize(last->equations());
