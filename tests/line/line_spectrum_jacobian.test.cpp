@@ -26,7 +26,9 @@ namespace test_line_spectrum_jacobian {
 
 namespace {
 
-using Residual = viscoroll::LineResidual<double, viscoroll::GaussLegendre<double, 12>>;
+using Residual = viscoroll::LineResidual<double, viscoroll::GaussLegendre<double, 12>,
+                                         viscoroll::ExteriorLeadingEdge, viscoroll::ParabolicDrop,
+                                         viscoroll::dynamic_memory_terms>;
 
 /// Largest relative column error of the Jacobian against central differences, at a contact
 /// narrower than the static one, offset from the expansions' leading terms by `offset`.

@@ -92,8 +92,9 @@ TEST_CASE("line tilt: the asymmetric spectrum residual's Jacobian against centra
                                                  .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
                                                  .lengths = lengths};
     for (const int terms : {2, 4}) {
-      const viscoroll::LineResidual<double, Rule, viscoroll::ExteriorLeadingEdge, TiltedDrop> res(
-          problem, terms, viscoroll::LineBasis::t_squared, 1, 0.0, TiltedDrop{theta}, true);
+      const viscoroll::LineResidual<double, Rule, viscoroll::ExteriorLeadingEdge, TiltedDrop,
+                                    viscoroll::dynamic_memory_terms>
+          res(problem, terms, viscoroll::LineBasis::t_squared, 1, 0.0, TiltedDrop{theta}, true);
       REQUIRE(res.unknowns() == 8 * terms + 9);
       REQUIRE(res.equations() == res.unknowns());
       viscoroll::LineSpectrumMoments<double> moments{{0.05}, {0.02}};

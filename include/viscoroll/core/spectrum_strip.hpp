@@ -272,7 +272,7 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
     row_max = std::max(row_max, row_sum);
     rhs_max = std::max(rhs_max, abs(rhs0[r]));
   }
-  for (const Real v : x) x_max = std::max(x_max, abs(v));
+  for (const Real& v : x) x_max = std::max(x_max, abs(v));
   out.residual = worst / (row_max * x_max + rhs_max);
   if (slopes != nullptr && right != nullptr) {
     // In the right sides: the system's solution for the columns d rhs / d right[k], and the

@@ -120,15 +120,23 @@ struct ParabolicDrop {
   }
 };
 
+/// What LineResidual takes: a NodalQuadratureRule, a LeadingEdgeCondition, a RollerDrop, and
+/// MemoryTerms 1 or dynamic_memory_terms.
+template <class Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+concept LineResidualArguments = NodalQuadratureRule<Quadrature, Real> &&
+    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real> &&
+    (MemoryTerms == 1 || MemoryTerms == dynamic_memory_terms);
+
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,
 /// `LeadingEdge` a LeadingEdgeCondition, `Drop` a RollerDrop. The problem decides the material:
 /// one memory term (the closed-form strips, 2N + 3 unknowns) or a spectrum (its `lengths` set:
 /// the strips' moments are unknowns too, 4N + 5; ExteriorLeadingEdge and oversampling 1 only).
+/// `MemoryTerms`, as a ConstitutiveModel's memory_term_count: 1 for one term only (a spectrum's
+/// members compile away), dynamic_memory_terms for either.
 /// A least-squares problem for numerics::levenberg_marquardt, with a semi-analytic Jacobian.
 template <RealScalar Real, class Quadrature, class LeadingEdge = ExteriorLeadingEdge,
-          class Drop = ParabolicDrop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
+          class Drop = ParabolicDrop, int MemoryTerms = 1>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
 class LineResidual {
  public:
   /// A column vector of unknowns or residuals.
@@ -167,10 +175,12 @@ class LineResidual {
     using std::cos;
     using std::sqrt;
     if (spectrum_) {
+      detail::require(MemoryTerms == dynamic_memory_terms, "memory terms", MemoryTerms,
+                      "dynamic_memory_terms for a spectrum's problem");
       detail::require(oversampling == 1, "oversampling", oversampling, "1 for a spectrum");
       detail::require(std::same_as<LeadingEdge, ExteriorLeadingEdge>, "leading edge", 0,
                       "ExteriorLeadingEdge, (L6), for a spectrum");
-      init_spectrum(quadrature_tolerance);
+      if constexpr (MemoryTerms != 1) init_spectrum(quadrature_tolerance);
     } else {
       scale_ = basis == LineBasis::s_mapped ? LineShape<Real>::mapped_scale(p_.vtau, p_.f, p_.a_ref)
                                             : Real(0);
@@ -271,9 +281,12 @@ class LineResidual {
     rule_->load(s, asymmetric_, nodes, weights);
     Real sum = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j)
-      sum += weights[j] *
-             (spectrum_ ? functions(s, mo, nodes[j]).f0
-                        : strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0);
+      if constexpr (MemoryTerms != 1)
+        sum += weights[j] *
+               (spectrum_ ? functions(s, mo, nodes[j]).f0
+                          : strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0);
+      else
+        sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
     return sum;
   }
 
@@ -390,12 +403,10 @@ class LineResidual {
   std::vector<Real> line_lambda_;  ///< their retardation lengths
 };
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::pack(const LineShape<Real>& given,
-                                                             const LineSpectrumMoments<Real>& mo,
-                                                             Real d) const -> Vector {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::pack(
+    const LineShape<Real>& given, const LineSpectrumMoments<Real>& mo, Real d) const -> Vector {
   using std::log;
   const bool same = given.basis == basis_ && given.scale == scale_;
   const bool fits = int(given.alpha.size()) <= n_ && int(given.beta.size()) <= n_ + 1 &&
@@ -435,12 +446,13 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::pack(const LineShape<Rea
   return x;
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::operator()(const Vector& x, Vector& r) const
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::operator()(const Vector& x,
+                                                                                Vector& r) const
     -> bool {
-  if (spectrum_) return spectrum_evaluate(x, r, nullptr);
+  if constexpr (MemoryTerms != 1)
+    if (spectrum_) return spectrum_evaluate(x, r, nullptr);
   r.resize(equations());
   const LineShape<Real> s = shape(x);
   const Real d = penetration(x);

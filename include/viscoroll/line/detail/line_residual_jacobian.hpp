@@ -19,12 +19,10 @@
 
 namespace viscoroll {
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-bool LineResidual<Real, Quadrature, LeadingEdge, Drop>::at_point(const LineShape<Real>& s, Real d,
-                                                                 Real y, Real& r34, Real& rle,
-                                                                 PointWork& work) const {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_point(
+    const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle, PointWork& work) const {
   const Real c1 = p_.c1;
   const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
   if (!(here.a > 0) || !(here.a + here.b > 0)) return false;
@@ -45,10 +43,9 @@ bool LineResidual<Real, Quadrature, LeadingEdge, Drop>::at_point(const LineShape
   return true;
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::point_rows(
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::point_rows(
     Real d, Real y, const StripFunctions<Real>& here, const LineNodes<Real>& nd,
     const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const -> EdgeTerms {
   const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
@@ -66,17 +63,18 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::point_rows(
   return {k0, k1, slope};
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x, Vector& r,
-                                                                 Matrix& jac) const
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::jacobian(const Vector& x,
+                                                                              Vector& r,
+                                                                              Matrix& jac) const
     -> bool requires std::same_as<LeadingEdge, ExteriorLeadingEdge> {
   using std::log;
-  if (spectrum_) {
-    jac.setZero(equations(), unknowns());
-    return spectrum_evaluate(x, r, &jac) && jac.allFinite();
-  }
+  if constexpr (MemoryTerms != 1)
+    if (spectrum_) {
+      jac.setZero(equations(), unknowns());
+      return spectrum_evaluate(x, r, &jac) && jac.allFinite();
+    }
   const int m = points(), nu = unknowns(), lam = 2 * n_ + 1, del = 2 * n_ + 2;
   r.resize(equations());
   jac.setZero(equations(), nu);
@@ -178,10 +176,10 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::jacobian(const Vector& x
   return jac.allFinite();
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::strip_derivatives(Real a, Real b) const
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::strip_derivatives(Real a,
+                                                                                       Real b) const
     -> StripDerivatives {
   using std::sqrt;
   const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
@@ -206,12 +204,10 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::strip_derivatives(Real a
           ri_x};
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop>::shape_gradient(const LineShape<Real>& s,
-                                                                       Real y, Real a, Vector& da,
-                                                                       Vector& db) const {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::shape_gradient(
+    const LineShape<Real>& s, Real y, Real a, Vector& da, Vector& db) const {
   da.setZero(unknowns());
   db.setZero(unknowns());
   const Real w = s.one_minus_t2(y);

@@ -30,15 +30,14 @@
 
 namespace viscoroll {
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop>::init_spectrum(Real tolerance) {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::init_spectrum(Real tolerance) {
   const auto& lam = p_.lengths.retardation;
   const auto& mu = p_.lengths.relaxation;
   detail::require(mu.size() == lam.size(), "relaxation lengths", mu.size(),
                   "as many as the retardation lengths");
-  for (const Real l : lam) lambda_sum_ += l;
+  for (const Real& l : lam) lambda_sum_ += l;
   // The node rule of the s-integrals: its end panels on the nearest pole of G0, where
   // I0(a/mu_1) = 0 (f of the rule such that (1 + f)/V = 1/mu_1); the memory integrals of all
   // line terms share one x-grid (detail/spectrum_memory.hpp, (S18)).
@@ -47,7 +46,7 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop>::init_spectrum(Real toler
   // leading-edge condition (S12); slower ones take the strip's own (plane) condition, right
   // side zero (S16): there the line correction is as large as its own error and the line
   // equations have no root (the slow regime, docs/theory.md section 4).
-  for (const Real l : lam) {
+  for (const Real& l : lam) {
     line_term_.push_back(l >= slow_fraction() * p_.a_ref);
     if (line_term_.back()) {
       line_.push_back(line_term_.size() - 1);
@@ -57,10 +56,9 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop>::init_spectrum(Real toler
   rule_.emplace(basis_, scale_, n_, lam[0], lam[0] / mu[0] - 1, tolerance);
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::functions(
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::functions(
     const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y) const -> Functions {
   const Real a = s.a(y);
   if (!(a > 0)) return {Real(0), s.b(y), Real(0), Real(0), Real(0)};
@@ -71,11 +69,10 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop>::functions(
           p_.c1 * a * a * (Real(1) / 4 + gamma / 2)};
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-        Real LineResidual<Real, Quadrature, LeadingEdge, Drop>::centroid(
-            const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo)
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms> Real
+LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::centroid(
+    const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo)
 const {
   std::vector<Real> nodes, weights;
   rule_->load(s, asymmetric_, nodes, weights);
@@ -88,11 +85,10 @@ const {
   return num / den;
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop>::chebyshev_values(Real u, Real* t,
-                                                                         Real t_y) const {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::chebyshev_values(
+    Real u, Real* t, Real t_y) const {
   t[0] = 1;
   if (n_ >= 1) t[1] = u;
   for (int k = 2; k <= n_; ++k) t[k] = 2 * u * t[k - 1] - t[k - 2];
@@ -102,13 +98,10 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop>::chebyshev_values(Real u,
 
 // d ln a/d alpha_k = T_k, db/d beta_k = a_ref T_k, dgamma/dgamma_k = T_k, dkappa/dkappa_k =
 // a_ref T_k, and the odd parts' t_y T_k alike.
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop>::add_series_row(Matrix& jac, int row,
-                                                                       const Real* t, Real ga,
-                                                                       Real gb, Real gg, Real gk,
-                                                                       Real scale) const {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::add_series_row(
+    Matrix& jac, int row, const Real* t, Real ga, Real gb, Real gg, Real gk, Real scale) const {
   const Real ar = p_.a_ref;
   for (int part = 0; part < (asymmetric_ ? 2 : 1); ++part) {
     const int base = part == 0 ? 0 : odd();
@@ -122,12 +115,10 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop>::add_series_row(Matrix& j
   }
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-bool LineResidual<Real, Quadrature, LeadingEdge, Drop>::spectrum_evaluate(const Vector& x,
-                                                                          Vector& r,
-                                                                          Matrix* jac) const {
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_evaluate(
+    const Vector& x, Vector& r, Matrix* jac) const {
   using std::log;
   r.resize(equations());
   const LineShape<Real> s = shape(x);
@@ -243,10 +234,9 @@ bool LineResidual<Real, Quadrature, LeadingEdge, Drop>::spectrum_evaluate(const 
   return true;
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop>::spectrum_right_slopes(
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_right_slopes(
     const Functions& here, const std::vector<ExteriorSlopes<Real>>& slopes,
     const std::vector<Real>& as, const std::vector<Real>& f0s, const std::vector<Real>& bks,
     const std::vector<Real>& qs, const std::vector<Real>& tv, const Real* ti,
@@ -282,10 +272,9 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop>::spectrum_right_slopes(
   }
 }
 
-template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop>
-requires NodalQuadratureRule<Quadrature, Real> &&
-    LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop>::spectrum_load_row(
+template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_load_row(
     const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Vector& r, Matrix* jac) const {
   const int m = points(), il = log_length();
   const Real c1 = p_.c1;

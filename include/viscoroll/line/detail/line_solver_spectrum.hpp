@@ -340,8 +340,8 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_iterate(const SpectrumRun<
       return ProfileDrop<std::remove_cvref_t<decltype(scene.roller)>>(scene.roller, u.length,
                                                                       u.curvature);
   }();
-  std::optional<
-      LineResidual<Real, Quadrature, ExteriorLeadingEdge, std::remove_const_t<decltype(drop)>>>
+  std::optional<LineResidual<Real, Quadrature, ExteriorLeadingEdge,
+                             std::remove_const_t<decltype(drop)>, dynamic_memory_terms>>
       last;
   Vector x;
   Matrix jac;                // Levenberg-Marquardt's Jacobian at its last iterate
