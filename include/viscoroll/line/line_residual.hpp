@@ -405,7 +405,7 @@ class LineResidual {
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::pack(
+inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::pack(
     const LineShape<Real>& given, const LineSpectrumMoments<Real>& mo, Real d) const -> Vector {
   using std::log;
   const bool same = given.basis == basis_ && given.scale == scale_;

@@ -21,7 +21,7 @@ namespace viscoroll {
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_point(
+inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_point(
     const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle, PointWork& work) const {
   const Real c1 = p_.c1;
   const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
@@ -45,7 +45,7 @@ bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_point(
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::point_rows(
+inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::point_rows(
     Real d, Real y, const StripFunctions<Real>& here, const LineNodes<Real>& nd,
     const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const -> EdgeTerms {
   const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
@@ -178,9 +178,8 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::jacobian(co
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::strip_derivatives(Real a,
-                                                                                       Real b) const
-    -> StripDerivatives {
+inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::strip_derivatives(
+    Real a, Real b) const -> StripDerivatives {
   using std::sqrt;
   const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
   if (!(a > 0)) return {{Real(0), b, Real(0), Real(0), Real(0)}, 0, 0, 0, 0, 0, 0, 0, 0};
@@ -206,7 +205,7 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::strip_deriv
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::shape_gradient(
+inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::shape_gradient(
     const LineShape<Real>& s, Real y, Real a, Vector& da, Vector& db) const {
   da.setZero(unknowns());
   db.setZero(unknowns());

@@ -32,7 +32,8 @@ namespace viscoroll {
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::init_spectrum(Real tolerance) {
+inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::init_spectrum(
+    Real tolerance) {
   const auto& lam = p_.lengths.retardation;
   const auto& mu = p_.lengths.relaxation;
   detail::require(mu.size() == lam.size(), "relaxation lengths", mu.size(),
@@ -58,7 +59,7 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::init_spectr
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::functions(
+inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::functions(
     const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y) const -> Functions {
   const Real a = s.a(y);
   if (!(a > 0)) return {Real(0), s.b(y), Real(0), Real(0), Real(0)};
@@ -70,10 +71,9 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::functions(
 }
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
-requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms> Real
-LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::centroid(
-    const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo)
-const {
+requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
+inline Real LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::centroid(
+    const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo) const {
   std::vector<Real> nodes, weights;
   rule_->load(s, asymmetric_, nodes, weights);
   Real num = 0, den = 0;
@@ -87,7 +87,7 @@ const {
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::chebyshev_values(
+inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::chebyshev_values(
     Real u, Real* t, Real t_y) const {
   t[0] = 1;
   if (n_ >= 1) t[1] = u;
@@ -100,7 +100,7 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::chebyshev_v
 // a_ref T_k, and the odd parts' t_y T_k alike.
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::add_series_row(
+inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::add_series_row(
     Matrix& jac, int row, const Real* t, Real ga, Real gb, Real gg, Real gk, Real scale) const {
   const Real ar = p_.a_ref;
   for (int part = 0; part < (asymmetric_ ? 2 : 1); ++part) {
@@ -117,7 +117,7 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::add_series_
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_evaluate(
+inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_evaluate(
     const Vector& x, Vector& r, Matrix* jac) const {
   using std::log;
   r.resize(equations());
@@ -236,7 +236,7 @@ bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_ev
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_right_slopes(
+inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_right_slopes(
     const Functions& here, const std::vector<ExteriorSlopes<Real>>& slopes,
     const std::vector<Real>& as, const std::vector<Real>& f0s, const std::vector<Real>& bks,
     const std::vector<Real>& qs, const std::vector<Real>& tv, const Real* ti,
@@ -274,7 +274,7 @@ void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_ri
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
-void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_load_row(
+inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spectrum_load_row(
     const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Vector& r, Matrix* jac) const {
   const int m = points(), il = log_length();
   const Real c1 = p_.c1;
