@@ -4,6 +4,7 @@
 // or a scene file's roller of finite length (LineProfileScene, tilted or not; on a spectrum
 // docs/theory.md (RP5)). The fields are those of viscoroll-solve --method line
 // (examples/viscoroll_solve.cpp).
+#include <concepts>
 #include <stdexcept>
 #include <utility>
 #include <viscoroll/line/line_solver.hpp>
@@ -17,44 +18,28 @@ namespace {
 
 using SpectrumSolver = LineSolver<double, PronyRelaxation<double>>;
 
-/// A line solution of a material of one relaxation time, by Solver (LineSolverD, or
-/// FastLineSolverD for the fast setting).
+/// A line solution by Solver (LineSolverD, or FastLineSolverD for the fast setting; SpectrumSolver
+/// for a Prony material): the fields of viscoroll-solve --method line, with pmax for one
+/// relaxation time and active_terms, spectrum_error for a spectrum, whose solution with two or
+/// more active terms is the contact's shape and moments, no pressure field (docs/line-solver.md,
+/// "Materials with a spectrum").
 template <class Solver>
 class LineSolved final : public Solved {
  public:
   using Solution = typename Solver::Solution;
+  static constexpr bool spectrum = std::same_as<Solver, SpectrumSolver>;
   LineSolved(Solution s, const RecordKeys& keys, double speed, int terms, double seconds)
       : Solved(Method::line), s_(std::move(s)) {
-    const auto peak = s_.strip(0.0).peak();
+    Record extra;
+    if constexpr (spectrum) {
+      extra = {{"active_terms", static_cast<long long>(s_.active_terms)},
+               {"spectrum_error", s_.spectrum_error}};
+    } else {
+      const auto peak = s_.strip(0.0).peak();
+      extra = {{"pmax", peak.pressure}, {"pmax_x", peak.x}};
+    }
     record_ = joined(keys.head("line", speed),
-                     cli::line_fields<Record>(s_, {{"pmax", peak.pressure}, {"pmax_x", peak.x}},
-                                              keys.duty(speed), terms, seconds));
-  }
-
-  const Solution& solution() const { return s_; }
-  double pressure(double x, double y) const override { return s_.pressure(x, y); }
-  double a(double y) const override { return s_.a(y); }
-  double b(double y) const override { return s_.b(y); }
-  double f0(double y) const override { return s_.f0(y); }
-
- private:
-  Solution s_;
-};
-
-/// A Prony material's line solution: the contact's shape and, with two or more active terms, its
-/// moments and no pressure field (docs/line-solver.md, "Materials with a spectrum"); active_terms
-/// in place of pmax.
-class LineSpectrumSolved final : public Solved {
- public:
-  using Solution = SpectrumSolver::Solution;
-  LineSpectrumSolved(Solution s, const RecordKeys& keys, double speed, int terms, double seconds)
-      : Solved(Method::line), s_(std::move(s)) {
-    record_ =
-        joined(keys.head("line", speed),
-               cli::line_fields<Record>(s_,
-                                        {{"active_terms", static_cast<long long>(s_.active_terms)},
-                                         {"spectrum_error", s_.spectrum_error}},
-                                        keys.duty(speed), terms, seconds));
+                     cli::line_fields<Record>(s_, extra, keys.duty(speed), terms, seconds));
   }
 
   const Solution& solution() const { return s_; }
@@ -129,8 +114,9 @@ SolvedPtr solve_line(const SceneSpec& scene, double speed, int terms, bool fast,
   // The scene `scene_at` builds at `speed`, by the material's solver (the setting's).
   const auto solve = [&](auto scene_at) {
     if (scene.material.prony)
-      return solve_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast, roots_only),
-                                              scene_at(speed), Method::line, start, keys, terms);
+      return solve_seeded<LineSolved<SpectrumSolver>>(
+          make_spectrum_solver(scene, terms, fast, roots_only), scene_at(speed), Method::line,
+          start, keys, terms);
     if (fast)
       return solve_seeded<LineSolved<FastLineSolverD>>(
           make_solver<FastLineSolverD>(scene, terms, fast, roots_only), scene_at(speed),
@@ -154,8 +140,9 @@ std::vector<SolvedPtr> sweep_line(const SceneSpec& scene, std::span<const double
   const auto sweep = [&](auto scene_at) {
     for (const double v : speeds) scene_at(v);
     if (scene.material.prony)
-      return sweep_seeded<LineSpectrumSolved>(make_spectrum_solver(scene, terms, fast, roots_only),
-                                              scene_at(0.0), speeds, keys, terms, options);
+      return sweep_seeded<LineSolved<SpectrumSolver>>(
+          make_spectrum_solver(scene, terms, fast, roots_only), scene_at(0.0), speeds, keys, terms,
+          options);
     if (fast)
       return sweep_seeded<LineSolved<FastLineSolverD>>(
           make_solver<FastLineSolverD>(scene, terms, fast, roots_only), scene_at(0.0), speeds, keys,
