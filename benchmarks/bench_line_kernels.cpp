@@ -57,8 +57,9 @@ template <class Real, Operator Op>
 void BM_line_operator(benchmark::State& state) {
   const Real l = Real(contact_half_lengths[state.range(0)]);
   const Real x = Real(kernel_scales[state.range(1)]);
-  const viscoroll::LineOperators<Real, viscoroll::GaussLegendre<Real, 12>> ops(l);
-  const viscoroll::PaperLeadingEdgeOperators<Real, viscoroll::GaussLegendre<Real, 12>> paper(l);
+  const viscoroll::line::LineOperators<Real, viscoroll::GaussLegendre<Real, 12>> ops(l);
+  const viscoroll::line::PaperLeadingEdgeOperators<Real, viscoroll::GaussLegendre<Real, 12>> paper(
+      l);
   const auto F = [l](Real y) { return (1 - (y / l) * (y / l)) / 4; };
   Real y = l / 3;
   const auto evaluate = [&] {

@@ -48,7 +48,7 @@ const viscoroll::LineSolution<Real, viscoroll::GaussLegendre<Real, 12>>& referen
 /// re-expanded to it.
 template <class Real>
 struct ResidualAtSolution {
-  using Residual = viscoroll::LineResidual<Real, viscoroll::GaussLegendre<Real, 12>>;
+  using Residual = viscoroll::line::LineResidual<Real, viscoroll::GaussLegendre<Real, 12>>;
   Residual residual;
   typename Residual::Vector x;
 

@@ -35,7 +35,7 @@ namespace {
 using Solver = viscoroll::FastLineSolverD;
 using Solution = Solver::Solution;
 using Rule = viscoroll::GaussLegendre<double, 6>;  // the fast setting's panels
-using Residual = viscoroll::LineResidual<double, Rule>;
+using Residual = viscoroll::line::LineResidual<double, Rule>;
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 

@@ -1169,7 +1169,7 @@ viscoroll::cli::LongTermContact line_long_term(const Problem& p) {
       return std::visit(
           [&](const auto& r) { return viscoroll::cli::profile_long_term(r, m, p.load); },
           *p.roller);
-    const auto h = viscoroll::hertz_contact(p.c1, *p.c2, m.long_term_compliance(), p.load);
+    const auto h = viscoroll::bem::hertz_contact(p.c1, *p.c2, m.long_term_compliance(), p.load);
     return viscoroll::cli::LongTermContact{h.a, h.b, h.d};
   };
   return p.prony ? of(*p.prony) : of(material(p, p.tau.front()));

@@ -11,6 +11,6 @@
 namespace viscoroll {
 
 template class LineSolver<double, StandardLinearSolid<double>>;
-template class LineResidual<double, GaussLegendre<double, 12>>;
+template class line::LineResidual<double, GaussLegendre<double, 12>>;
 
 }  // namespace viscoroll

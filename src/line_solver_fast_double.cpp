@@ -11,6 +11,6 @@
 namespace viscoroll {
 
 template class LineSolver<double, StandardLinearSolid<double>, GaussLegendre<double, 6>>;
-template class LineResidual<double, GaussLegendre<double, 6>>;
+template class line::LineResidual<double, GaussLegendre<double, 6>>;
 
 }  // namespace viscoroll

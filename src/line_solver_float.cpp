@@ -11,6 +11,6 @@
 namespace viscoroll {
 
 template class LineSolver<float, StandardLinearSolid<float>>;
-template class LineResidual<float, GaussLegendre<float, 12>>;
+template class line::LineResidual<float, GaussLegendre<float, 12>>;
 
 }  // namespace viscoroll

@@ -11,6 +11,6 @@
 namespace viscoroll {
 
 template class LineSolver<long double, StandardLinearSolid<long double>>;
-template class LineResidual<long double, GaussLegendre<long double, 12>>;
+template class line::LineResidual<long double, GaussLegendre<long double, 12>>;
 
 }  // namespace viscoroll

@@ -183,7 +183,7 @@ std::pair<double, double> line_long_term(const SceneSpec& scene) {
   const double compliance = scene.material.prony
                                 ? scene.material.prony->reference.long_term_compliance()
                                 : material_of(scene).long_term_compliance();
-  const auto h = hertz_contact(scene.roller.c1, scene.roller.c2, compliance, scene.load);
+  const auto h = bem::hertz_contact(scene.roller.c1, scene.roller.c2, compliance, scene.load);
   return {h.a, h.b};
 }
 

@@ -146,7 +146,7 @@ void solve_and_check(const Material& material, const viscoroll::BemOptions& opti
   // with h/a the cell over the semi-axis in contact (tests/bem/bem_solver.test.cpp), h/a <= 1/grid
   // for the long-term contact and <= (1 + f)^(1/3) / grid for the glassy one; bound (h/a)^2.
   const auto glassy =
-      viscoroll::hertz_contact(scene.c1, scene.c2, instantaneous_compliance, scene.load);
+      viscoroll::bem::hertz_contact(scene.c1, scene.c2, instantaneous_compliance, scene.load);
   const double n = options.grid;
   const double ha_long = 1 / n,
                ha_glassy = std::cbrt(s.long_term.a * s.long_term.b / (glassy.a * glassy.b)) / n;
@@ -247,8 +247,8 @@ void run_bem_cases(int count, std::uint64_t seed, int max_grid, Tally& tally) {
       double f_total = 0;
       for (const auto& t : terms) f_total += t.f;
       const double c = (1 - nu) / (2 * pi * mu_d);
-      speed = log_uniform(-4, 4) * viscoroll::hertz_contact(c1, c2, (1 + f_total) * c, load).a /
-              tau_max;
+      speed = log_uniform(-4, 4) *
+              viscoroll::bem::hertz_contact(c1, c2, (1 + f_total) * c, load).a / tau_max;
     }
     if (unit(rng) < 0.05) speed = 0;
     if (invalid()) {

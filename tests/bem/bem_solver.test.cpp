@@ -26,8 +26,8 @@ using viscoroll::BemOptions;
 using viscoroll::BemScene;
 using viscoroll::BemSolver;
 using viscoroll::BemSolverD;
-using viscoroll::hertz_contact;
 using viscoroll::StandardLinearSolid;
+using viscoroll::bem::hertz_contact;
 
 constexpr double f = 9, nu = 0.5, mu = 1;
 const double pi = std::acos(-1.0);
@@ -47,7 +47,7 @@ struct Errors {
 };
 
 Errors hertz_errors(const viscoroll::BemSolution<double>& s,
-                    const viscoroll::HertzContact<double>& h) {
+                    const viscoroll::bem::HertzContact<double>& h) {
   return {std::abs(s.a0 - h.a), std::abs(s.l - h.b), std::abs(s.d - h.d) / h.d};
 }
 
@@ -101,8 +101,8 @@ TEST_CASE("bem: an elastic half space is Hertz", "[bem]") {
   o.grid = 8;
   const BemSolver<double, viscoroll::Elastic<double>> s(viscoroll::Elastic<double>(1.0, 0.3), o);
   const auto sol = s.solve(BemScene<double>{1.0, 0.5, 2.0, 3.0});
-  const auto h =
-      hertz_contact(1.0, 0.5, viscoroll::Elastic<double>(1.0, 0.3).instantaneous_compliance(), 2.0);
+  const auto h = hertz_contact(
+      1.0, 0.5, viscoroll::Elastic<double>(1.0, 0.3).instantaneous_compliance(), 2.0);
   REQUIRE(sol.converged);
   const double ha = sol.grid.hx / h.a;
   CHECK(std::abs(sol.d - h.d) / h.d <= ha * ha / 5);

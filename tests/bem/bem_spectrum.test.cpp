@@ -33,9 +33,9 @@ namespace {
 using viscoroll::BemOptions;
 using viscoroll::BemScene;
 using viscoroll::BemSolution;
-using viscoroll::hertz_contact;
-using viscoroll::HertzContact;
 using viscoroll::PronyCreep;
+using viscoroll::bem::hertz_contact;
+using viscoroll::bem::HertzContact;
 
 using Solver = viscoroll::BemSolver<double, PronyCreep<double>>;
 
@@ -61,7 +61,8 @@ PronyCreep<double> far_apart(double tau1, double tau2) {
 
 /// B13's bounds on the distance of a solution from Hertz's contact h, widened by `relative` (the
 /// solution's own distance from the contact h describes, relative to it).
-void check_hertz(const BemSolution<double>& s, const HertzContact<double>& h, double relative) {
+void check_hertz(const BemSolution<double>& s, const HertzContact<double>& h,
+                 double relative) {
   const double ha = s.grid.hx / h.a;
   CAPTURE(s.a0, h.a, s.l, h.b, s.d, h.d, s.grid.hx, s.grid.hy, relative);
   CHECK(std::abs(s.a0 - h.a) <= s.grid.hx / 4 + relative * h.a);
@@ -125,8 +126,8 @@ TEST_CASE("bem spectrum: two times far apart give two peaks of chi, far below th
   const double lower_peak = peaks.lowest;
   // V = 1 (k = 28): within the plateau's bound C1 (eps1 + eps2) a (measured 1.07e-4 against
   // 1.6e-3), and so far below the lower peak.
-  const auto mid =
-      hertz_contact(1.0, scene(1.0).c2, 5 * far_apart(1e-4, 1e4).instantaneous_compliance(), 1.0);
+  const auto mid = hertz_contact(1.0, scene(1.0).c2,
+                                      5 * far_apart(1e-4, 1e4).instantaneous_compliance(), 1.0);
   const double bound = plateau_bound(4, 4, 1e-4, 1e4, mid.a, mid.b);
   CAPTURE(chi[28], lower_peak, bound);
   CHECK(chi[28] >= 0);

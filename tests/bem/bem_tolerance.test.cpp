@@ -54,7 +54,7 @@ TEST_CASE("bem tolerance: the estimates bound the error against exact Hertz cont
   for (const double speed : {0.0, 1e12}) {
     for (const double c2 : {1.0, c2_paper}) {
       const BemScene<double> scene{1.0, c2, 1.0, speed};
-      const auto h = viscoroll::hertz_contact(1.0, c2, (speed == 0 ? 1 + f : 1.0) * c, 1.0);
+      const auto h = viscoroll::bem::hertz_contact(1.0, c2, (speed == 0 ? 1 + f : 1.0) * c, 1.0);
       const auto s = refining(0.01, 4).solve(scene);
       INFO("speed " << speed << " c2 " << c2 << " elements " << s.elements);
       REQUIRE(s.converged);
@@ -110,8 +110,8 @@ TEST_CASE("bem tolerance: the refinement sizes the cells by the contact it found
   const auto s = refining(0.01).solve(scene);
   REQUIRE(s.converged);
   REQUIRE(s.elements >= 16);
-  const auto long_term = viscoroll::hertz_contact(1.0, c2_paper, (1 + f) * c, load_paper);
-  const auto glassy = viscoroll::hertz_contact(1.0, c2_paper, c, load_paper);
+  const auto long_term = viscoroll::bem::hertz_contact(1.0, c2_paper, (1 + f) * c, load_paper);
+  const auto glassy = viscoroll::bem::hertz_contact(1.0, c2_paper, c, load_paper);
   const double n = s.elements;
   CHECK(n * s.grid.hx <= glassy.a + 4 * long_term.a / n);
   CHECK(n * s.grid.hx < long_term.a);  // finer than the fixed grid of n

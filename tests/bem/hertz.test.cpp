@@ -12,8 +12,8 @@
 // The file's contents live in a namespace of their own: the tests are compiled in unity batches.
 namespace test_hertz {
 
-using viscoroll::hertz_contact;
-using viscoroll::hertz_curvature_ratio;
+using viscoroll::bem::hertz_contact;
+using viscoroll::bem::hertz_curvature_ratio;
 
 TEST_CASE("bem: Ferrers' integrals (B8b) in elliptic integrals", "[bem]") {
   boost::math::quadrature::exp_sinh<double> rule;

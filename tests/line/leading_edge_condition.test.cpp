@@ -34,8 +34,8 @@ namespace test_leading_edge_condition {
 
 namespace {
 
-using viscoroll::LineOperators;
 using viscoroll::detail::graded_integral;
+using viscoroll::line::LineOperators;
 
 /// Integral of g over [0, length] on panels doubling from scale/2^levels, each at most `cap`
 /// wide (so that an exponential weight varies by a bounded factor on every panel).
@@ -128,7 +128,7 @@ template <class Real, class Rule>
 Residuals<Real> residuals(const Contact<Real>& c, Real y, bool with_quadrature) {
   using std::exp;
   const LineOperators<Real, Rule> ops(c.l);
-  const viscoroll::PaperLeadingEdgeOperators<Real, Rule> paper(c.l);
+  const viscoroll::line::PaperLeadingEdgeOperators<Real, Rule> paper(c.l);
   const Real V = c.vtau, a = c.a(y), b = c.b(y), g = c.g(y), x0 = a + b;
   const auto f0 = [&](Real t) { return c.template moment<Rule>(t, 0); };
   const auto f1 = [&](Real t) { return c.template moment<Rule>(t, 1); };
@@ -141,12 +141,12 @@ Residuals<Real> residuals(const Contact<Real>& c, Real y, bool with_quadrature) 
   // (42): the eta-integral of I[Q, eta] by quadrature in t = eta - x0.
   const auto iq = [&](Real t) { return exp(-t / V) * ops.extended(q, Real(x0 + t), y); };
   const Real laplace = capped_integral<Rule>(iq, depth * V, std::min(x0, V), 2, V) / V;
-  r.eq42 = viscoroll::leading_edge_bessel_term_scaled(c.c1, a, b, g, V) + laplace +
+  r.eq42 = viscoroll::line::leading_edge_bessel_term_scaled(c.c1, a, b, g, V) + laplace +
            ops.extended(f1, x0, y) / V - lambda_f0;
   r.scale42 = std::abs(lambda_f0);
 
   // (44)
-  const Real lhs44 = viscoroll::leading_edge_bessel_term(c.c1, a, b, g, V);
+  const Real lhs44 = viscoroll::line::leading_edge_bessel_term(c.c1, a, b, g, V);
   r.eq44_l2 = lhs44 - paper.kernel(q, V, y);
   r.eq44_lit = lhs44 - paper.literal(q, V, y);
   r.scale = std::abs(lambda_q) + 2 * std::abs(q(y)) * (1 + std::abs(std::log(V)));

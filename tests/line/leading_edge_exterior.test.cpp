@@ -15,9 +15,9 @@ namespace test_leading_edge_exterior {
 namespace {
 
 using viscoroll::GaussLegendre;
-using viscoroll::LineProblem;
-using viscoroll::LineResidual;
 using viscoroll::LineShape;
+using viscoroll::line::LineProblem;
+using viscoroll::line::LineResidual;
 
 constexpr double f = 9, c1 = 1;
 
@@ -70,16 +70,16 @@ TEST_CASE("line: (L6) as assembled equals Lambda[Q] - int e^-t I[Q, x0 + V t] dt
   // ~0.1-1), so agreement to 1e-10 in the scaled residual (an error in b/a0) checks the algebra of
   // section 4.
   const double l = 5;
-  using Ops = viscoroll::LineOperators<double, GaussLegendre<double, 24>>;
+  using Ops = viscoroll::line::LineOperators<double, GaussLegendre<double, 24>>;
   const Ops ops(l);
   for (const double vtau : {0.05, 1.0, 30.0}) {
     for (const double y : {0.0, 2.9, 4.6}) {
       const double beta = 0.3 * vtau / (1 + vtau);
       const LineShape<double> shape{1.0, l, {0.0}, {beta}};
       const auto q = [&](double yp) {
-        return viscoroll::strip_functions(c1, shape.a(yp), beta, vtau, f).q;
+        return viscoroll::plane::strip_functions(c1, shape.a(yp), beta, vtau, f).q;
       };
-      const auto here = viscoroll::strip_functions(c1, shape.a(y), beta, vtau, f);
+      const auto here = viscoroll::plane::strip_functions(c1, shape.a(y), beta, vtau, f);
       const double a = here.a, x0 = a + beta;
       // int_0^inf e^-t I[Q, x0 + V t] dt on geometric panels from min(x0/V, 1)/4.
       const double first = std::min(x0 / vtau, 1.0) / 4;
@@ -134,7 +134,7 @@ TEST_CASE("line: (L6) limits at y = 0", "[line]") {
   }
   SECTION("glassy: C1 b V -> Lambda[Q] + 2 Q ln(2/a), Q = C1 a^2 f/4") {
     const double l = 5;
-    const viscoroll::LineOperators<double, GaussLegendre<double, 24>> ops(l);
+    const viscoroll::line::LineOperators<double, GaussLegendre<double, 24>> ops(l);
     const auto qg = [&](double y) { return c1 * (1 - y * y / (l * l)) * f / 4; };
     const double target = ops.near_field(qg, 0.0) + 2 * qg(0.0) * std::log(2.0);
     double previous = 1e300;

@@ -26,12 +26,12 @@ long double reference_chi(const SixPointSolver::Solution& sol) {
   const auto vn = [&](long double y) -> long double {
     const auto s = sol.functions(double(y));
     if (!(s.a > 0)) return 0;
-    const long double alpha = viscoroll::strip_alpha<long double>(s.a, sol.vtau, sol.f);
+    const long double alpha = viscoroll::plane::strip_alpha<long double>(s.a, sol.vtau, sol.f);
     const long double i0 = cyl_bessel_i(0, alpha);
     return sol.c1 / 4.0L *
-           viscoroll::strip_first_moment<long double>(s.a, s.b, s.g, sol.vtau, sol.f,
-                                                      cyl_bessel_i(1, alpha) / i0,
-                                                      cyl_bessel_i(2, alpha) / i0);
+           viscoroll::plane::strip_first_moment<long double>(s.a, s.b, s.g, sol.vtau, sol.f,
+                                                             cyl_bessel_i(1, alpha) / i0,
+                                                             cyl_bessel_i(2, alpha) / i0);
   };
   const auto f0 = [&](long double y) -> long double { return sol.functions(double(y)).f0; };
   boost::math::quadrature::tanh_sinh<long double> rule;  // integrate() is not const in Boost 1.74

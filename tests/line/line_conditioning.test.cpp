@@ -44,7 +44,7 @@ TEST_CASE("line theory: the near-field operator of (34) has the symbol 2 ln(4 e^
   for (const int m : {4, 8}) {
     for (const double k : {0.5, 2.0, 4.0}) {
       const double l = 2 * boost::math::constants::pi<double>() * m / k;
-      const viscoroll::LineOperators<double, viscoroll::GaussLegendre<double, 24>> ops(l);
+      const viscoroll::line::LineOperators<double, viscoroll::GaussLegendre<double, 24>> ops(l);
       const auto f = [k](double y) { return std::cos(k * y); };
       for (const double a : {0.3, 1.0}) {
         const double got = ops.near_field_strip(f, 0.0, a);

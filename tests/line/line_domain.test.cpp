@@ -13,8 +13,8 @@ TEST_CASE("line domain: slender static shapes carry no warning, short ones do",
           "[line][validate]") {
   using viscoroll::LineShape;
   // Static shape (alpha = 0): a = sqrt(1 - t^2), largest at y = 0, so only l/a(0) decides.
-  CHECK(viscoroll::line_domain_warnings(LineShape<double>{1.0, 3.0, {0.0}, {0.0}}).empty());
-  const auto w = viscoroll::line_domain_warnings(LineShape<double>{1.0, 2.9, {0.0}, {0.0}});
+  CHECK(viscoroll::line::line_domain_warnings(LineShape<double>{1.0, 3.0, {0.0}, {0.0}}).empty());
+  const auto w = viscoroll::line::line_domain_warnings(LineShape<double>{1.0, 2.9, {0.0}, {0.0}});
   REQUIRE(w.size() == 1);
   CHECK(w.front().code == viscoroll::WarningCode::line_aspect);
   CHECK(w.front().text.find("l/a(0) = 2.9") != std::string::npos);
@@ -26,7 +26,8 @@ TEST_CASE("line domain: a(y) larger off the centre than l/3 is flagged", "[line]
   // d ln a / dw = -1/(2(1 - w)) + 2 = 0 at w = 3/4: a_max = e^(1/2)/2 = 0.8244 at t = 0.8660.
   const double a0 = std::exp(-1.0), a_max = std::exp(0.5) / 2;
   // l = 2: l/a(0) = 5.44 >= 3 but l/a_max = 2.43 < 3.
-  const auto w = viscoroll::line_domain_warnings(LineShape<double>{1.0, 2.0, {0.0, 1.0}, {0.0}});
+  const auto w =
+      viscoroll::line::line_domain_warnings(LineShape<double>{1.0, 2.0, {0.0, 1.0}, {0.0}});
   REQUIRE(w.size() == 1);
   CHECK(w.front().code == viscoroll::WarningCode::line_width);
   // The sampled maximum (65 points, spacing 1/64 in t) lies within 1/128 of the peak, where
@@ -38,7 +39,8 @@ TEST_CASE("line domain: a(y) larger off the centre than l/3 is flagged", "[line]
   CHECK(std::abs(printed - a_max) <= 1e-3 * a_max);
   // l = 2.5 > 3 a_max = 2.473: no warning; and l/a(0) >= 3.
   CHECK(2.5 / a0 >= 3);
-  CHECK(viscoroll::line_domain_warnings(LineShape<double>{1.0, 2.5, {0.0, 1.0}, {0.0}}).empty());
+  CHECK(viscoroll::line::line_domain_warnings(LineShape<double>{1.0, 2.5, {0.0, 1.0}, {0.0}})
+            .empty());
 }
 
 }  // namespace test_line_domain

@@ -113,8 +113,9 @@ TEST_CASE("line: the paper's (44) closes the same equations with another leading
   // minus V/a0 times row m + i) and the load agree to rounding, and the (44) rows are the
   // distance to the (44) root in b/a0, which docs/validation.md measures as 0.5% of
   // b(0) = 0.306 a0 (1.5e-3; the rows at all points lie between 1e-4 and 1e-1).
-  using Paper = viscoroll::PaperLineResidual<double>;
-  static_assert(HasJacobian<viscoroll::LineResidual<double, viscoroll::GaussLegendre<double, 12>>>);
+  using Paper = viscoroll::line::PaperLineResidual<double>;
+  static_assert(
+      HasJacobian<viscoroll::line::LineResidual<double, viscoroll::GaussLegendre<double, 12>>>);
   static_assert(!HasJacobian<Paper>);
   LineOptions options;
   options.terms = 4;

@@ -21,8 +21,8 @@ namespace test_line_operators {
 
 namespace {
 
-using viscoroll::LineOperators;
-using viscoroll::PaperLeadingEdgeOperators;
+using viscoroll::line::LineOperators;
+using viscoroll::line::PaperLeadingEdgeOperators;
 
 template <class Real>
 Real parse(const char* s) {
@@ -196,7 +196,7 @@ TEST_CASE("line: finite part converges with the rule's order and the end grading
   const double exact = f(y) * (std::log((1.05 - y) / 0.05) - std::log(2.05 / (1.05 - y)));
   // Rounding floor: eps sup|f| sum_j w_j/s_j <= 24 eps * 20.
   const double floor = 24 * eps<double>() * 20;
-  viscoroll::LineOperatorOptions coarse;
+  viscoroll::line::LineOperatorOptions coarse;
   coarse.end_levels = 0;  // panels [0, d/4], [d/4, d/2], [d/2, d] on each side
   const auto error = [&](auto ops) { return std::abs(ops.finite_part(f, y) - exact); };
   using viscoroll::GaussLegendre;
@@ -272,19 +272,20 @@ TEMPLATE_TEST_CASE("line: the operators on the line residual's node set", "[line
   // sup|Q| + sup|Q'| (the rounding of Q(y') - Q(y) and of y'). l = 1, N = 4, V tau = 1, f = 9.
   using Real = TestType;
   using Rule = viscoroll::GaussLegendre<Real, 12>;
-  const viscoroll::LineNodeRule<Real, Rule> rule(viscoroll::LineBasis::t_squared, Real(0), 4,
-                                                 Real(1), Real(9));
+  const viscoroll::line::LineNodeRule<Real, Rule> rule(viscoroll::LineBasis::t_squared, Real(0), 4,
+                                                       Real(1), Real(9));
   const viscoroll::LineShape<Real> shape{Real(1), Real(1), {Real(0)}, {Real(0)}};
   for (const auto& r : extended_refs) {
     const Real x = parse<Real>(r.x), y = parse<Real>(r.y);
-    viscoroll::LineNodes<Real> nd;
+    viscoroll::line::LineNodes<Real> nd;
     rule.point(shape, y, x, nd);
     const Real qy = q_profile(y);
     const auto dq = LineOperators<Real, Rule>::differences(nd, q_profile<Real>, qy);
     INFO("x = " << r.x << ", y = " << r.y);
     const Real condition = 24 + 2 * std::abs(std::log(x));
     const Real condition_dx = condition + Real(8) / 3 / x;
-    CHECK(std::abs(extended(nd, dq, qy, x) - parse<Real>(r.value)) <= 8 * eps<Real>() * condition);
+    CHECK(std::abs(extended(nd, dq, qy, x) - parse<Real>(r.value)) <=
+          8 * eps<Real>() * condition);
     CHECK(std::abs(extended_dx(nd, dq, qy, x) - parse<Real>(r.derivative)) <=
           8 * eps<Real>() * condition_dx);
     Real fp_condition = 0;
@@ -358,8 +359,8 @@ TEMPLATE_TEST_CASE("line: Bessel term of (42) and (44) without overflow", "[line
   for (const auto& c : cases) {
     const Real c1 = Real(c.c1), a = parse<Real>(c.a), b = parse<Real>(c.b), g = parse<Real>(c.g),
                v = parse<Real>(c.vtau);
-    const Real lhs = viscoroll::leading_edge_bessel_term(c1, a, b, g, v);
-    const Real term = viscoroll::leading_edge_bessel_term_scaled(c1, a, b, g, v);
+    const Real lhs = viscoroll::line::leading_edge_bessel_term(c1, a, b, g, v);
+    const Real term = viscoroll::line::leading_edge_bessel_term_scaled(c1, a, b, g, v);
     // Scaled K to a few eps; the difference a b K1 - G K0 cancels by at most a factor 20 here,
     // and e^{-(a+b)/V} carries the rounding of (a+b)/V (relative eps (a+b)/V <= eps).
     CHECK(std::abs(lhs - parse<Real>(c.lhs44)) <=
@@ -369,11 +370,11 @@ TEMPLATE_TEST_CASE("line: Bessel term of (42) and (44) without overflow", "[line
   }
   // Far beyond the exponent range of e^{a/V}: finite (underflows to 0 only through e^{-(a+b)/V}).
   const Real lhs =
-      viscoroll::leading_edge_bessel_term(Real(1), Real(1), Real(0.1), Real(0.2), Real(1e-6));
+      viscoroll::line::leading_edge_bessel_term(Real(1), Real(1), Real(0.1), Real(0.2), Real(1e-6));
   CHECK(std::isfinite(lhs));
   CHECK(lhs == Real(0));
-  const Real term = viscoroll::leading_edge_bessel_term_scaled(Real(1), Real(1), Real(0.1),
-                                                               Real(0.2), Real(1e-6));
+  const Real term = viscoroll::line::leading_edge_bessel_term_scaled(Real(1), Real(1), Real(0.1),
+                                                                     Real(0.2), Real(1e-6));
   CHECK(std::isfinite(term));
   CHECK(term != 0);
 }

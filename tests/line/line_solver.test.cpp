@@ -256,7 +256,7 @@ TEMPLATE_TEST_CASE("line solver: the glassy closed form", "[line]", float, doubl
   const Real tol = 16 * eps<Real>();  // as above; measured <= 2 eps
   const Scene<Real> sc;
   const Real v = Real(1e25);
-  REQUIRE(viscoroll::strip_is_glassy(v, sc.f, Real(1)));
+  REQUIRE(viscoroll::plane::strip_is_glassy(v, sc.f, Real(1)));
   const auto s = Solver<Real>(sc.material()).solve(sc.scene(v));
   INFO("reason: " << s.reason);
   CHECK(s.converged);

@@ -41,13 +41,13 @@ TEST_CASE("line spectrum: (S12) for one term is the paper's leading-edge conditi
   // One term: A = C1 e^z (a b K1(z) - G K0(z)) = Psi R with Psi = 1 - mu/lambda = f/(1 + f), and
   // G (36) from the trailing edge; spectrum_strip solves for b and G0 = G given R.
   const double f = 3, lambda = 0.7, a = 0.6, c1 = 1.3;
-  viscoroll::SpectrumLengths<double> lengths;
+  viscoroll::plane::SpectrumLengths<double> lengths;
   lengths.retardation = {lambda};
   lengths.relaxation = {lambda / (1 + f)};
   lengths.creep_ratio = f;
   for (const double right : {0.0, 0.05, -0.2}) {
     const std::vector<double> r{right};
-    const auto st = viscoroll::spectrum_strip(a, lengths, &r, c1);
+    const auto st = viscoroll::plane::spectrum_strip(a, lengths, &r, c1);
     const double z = a / lambda;
     const double k0 = viscoroll::special::bessel_k0_scaled(z);
     const double k1 = viscoroll::special::bessel_k1_scaled(z);

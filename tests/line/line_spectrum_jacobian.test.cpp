@@ -26,9 +26,10 @@ namespace test_line_spectrum_jacobian {
 
 namespace {
 
-using Residual = viscoroll::LineResidual<double, viscoroll::GaussLegendre<double, 12>,
-                                         viscoroll::ExteriorLeadingEdge, viscoroll::ParabolicDrop,
-                                         viscoroll::dynamic_memory_terms>;
+using Residual =
+    viscoroll::line::LineResidual<double, viscoroll::GaussLegendre<double, 12>,
+                                  viscoroll::line::ExteriorLeadingEdge,
+                                  viscoroll::line::ParabolicDrop, viscoroll::dynamic_memory_terms>;
 
 /// Largest relative column error of the Jacobian against central differences, at a contact
 /// narrower than the static one, offset from the expansions' leading terms by `offset`.
@@ -36,14 +37,15 @@ double worst_column_error(double v, int terms, double offset) {
   const double c1 = 1, c2 = (std::log(20.0) - 1) / 25;
   const auto lengths = viscoroll_test::three_term_lengths(v);
   const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
-  const viscoroll::LineProblem<double> problem{.c1 = c1,
-                                               .c2 = c2,
-                                               .vtau = 0,
-                                               .f = 0,
-                                               .a_ref = slow.a0,
-                                               .l_ref = slow.l,
-                                               .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
-                                               .lengths = lengths};
+  const viscoroll::line::LineProblem<double> problem{
+      .c1 = c1,
+      .c2 = c2,
+      .vtau = 0,
+      .f = 0,
+      .a_ref = slow.a0,
+      .l_ref = slow.l,
+      .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
+      .lengths = lengths};
   const Residual res(problem, terms);
   REQUIRE(res.spectrum());
   REQUIRE(res.unknowns() == 4 * terms + 5);
@@ -61,9 +63,9 @@ TEST_CASE("spectrum strip: slopes in the right sides and the half width", "[line
   const auto lengths = viscoroll_test::three_term_lengths(1.0);
   const std::vector<double> right{0.03, -0.02, 0.05};
   const double a = 0.8, c1 = 1.3;
-  viscoroll::SpectrumStripSlopes<double> slopes;
-  const auto st = viscoroll::spectrum_strip(a, lengths, &right, c1, &slopes);
-  const auto field = [](const viscoroll::SpectrumStrip<double>& s) {
+  viscoroll::plane::SpectrumStripSlopes<double> slopes;
+  const auto st = viscoroll::plane::spectrum_strip(a, lengths, &right, c1, &slopes);
+  const auto field = [](const viscoroll::plane::SpectrumStrip<double>& s) {
     return std::vector<double>{s.b, s.g0, s.pig1, s.centroid};
   };
   const std::vector<double> base = field(st);
@@ -74,8 +76,8 @@ TEST_CASE("spectrum strip: slopes in the right sides and the half width", "[line
     auto up = right, down = right;
     up[k] += h;
     down[k] -= h;
-    const auto fu = field(viscoroll::spectrum_strip(a, lengths, &up, c1));
-    const auto fd = field(viscoroll::spectrum_strip(a, lengths, &down, c1));
+    const auto fu = field(viscoroll::plane::spectrum_strip(a, lengths, &up, c1));
+    const auto fd = field(viscoroll::plane::spectrum_strip(a, lengths, &down, c1));
     const std::vector<double> got{slopes.b[k], slopes.g0[k], slopes.pig1[k], slopes.centroid[k]};
     for (std::size_t q = 0; q < 4; ++q) {
       const double diff = (fu[q] - fd[q]) / (2 * h);
@@ -87,7 +89,7 @@ TEST_CASE("spectrum strip: slopes in the right sides and the half width", "[line
   // Richardson's extrapolation (error O(h^4) = 1e-16 a^4).
   const double h = 1e-4 * a;
   const auto f = [&](double aa) {
-    return field(viscoroll::spectrum_strip(aa, lengths, &right, c1));
+    return field(viscoroll::plane::spectrum_strip(aa, lengths, &right, c1));
   };
   const auto f1 = f(a + h), f2 = f(a - h), f3 = f(a + 2 * h), f4 = f(a - 2 * h);
   const std::vector<double> got{slopes.b_a, slopes.g0_a, slopes.pig1_a, slopes.centroid_a};
@@ -119,14 +121,14 @@ TEST_CASE("line spectrum: the shared memory grid against exterior_right term by 
   // (S18): the right sides R_k and their slopes in x0 and ln l from one x-grid against
   // exterior_right on each term's own node set (LineNodeRule at V tau = lambda_k), for smooth
   // Q_k = F (1 - g/lambda_k) on a contact of half length 3, at a point off the centre.
-  using Rule = viscoroll::LineNodeRule<double, viscoroll::GaussLegendre<double, 12>>;
+  using Rule = viscoroll::line::LineNodeRule<double, viscoroll::GaussLegendre<double, 12>>;
   const viscoroll::LineShape<double> shape{0.6, 3.0, {-0.2, 0.05}, {0.1, 0.02}};
   const double y = 0.7, x0 = 0.5, mu1 = 0.02;
   const std::vector<double> lambda{0.05, 0.3, 2.0, 40.0};
   const auto big_f = [&](double yy) { return shape.one_minus_t2(yy) * (1 + 0.3 * yy); };
   const auto g = [](double yy) { return 0.1 + 0.05 * yy; };
   const auto q_of = [&](double yy, double lam) { return big_f(yy) * (1 - g(yy) / lam); };
-  viscoroll::LineNodes<double> shared;
+  viscoroll::line::LineNodes<double> shared;
   Rule(viscoroll::LineBasis::t_squared, 0.0, 4, lambda[0], lambda[0] / mu1 - 1)
       .point(shape, y, x0, shared);
   std::vector<double> f0, c, q(lambda.size()), right;
@@ -136,20 +138,20 @@ TEST_CASE("line spectrum: the shared memory grid against exterior_right term by 
   }
   for (std::size_t k = 0; k < lambda.size(); ++k) q[k] = q_of(y, lambda[k]);
   viscoroll::detail::SpectrumMemoryWork<double> work;
-  std::vector<viscoroll::ExteriorSlopes<double>> slopes;
+  std::vector<viscoroll::line::ExteriorSlopes<double>> slopes;
   viscoroll::detail::exterior_right_terms<viscoroll::GaussLegendre<double, 12>>(
       shared, x0, lambda, f0, c, q, right, work, &slopes);
   std::vector<double> plain;
   viscoroll::detail::exterior_right_terms<viscoroll::GaussLegendre<double, 12>>(
       shared, x0, lambda, f0, c, q, plain, work);
   for (std::size_t k = 0; k < lambda.size(); ++k) {
-    viscoroll::LineNodes<double> own;
+    viscoroll::line::LineNodes<double> own;
     Rule(viscoroll::LineBasis::t_squared, 0.0, 4, lambda[k], lambda[k] / mu1 - 1)
         .point(shape, y, x0, own);
     std::vector<double> dq_own(own.yp.size());
     for (std::size_t j = 0; j < own.yp.size(); ++j) dq_own[j] = q_of(own.yp[j], lambda[k]) - q[k];
-    viscoroll::ExteriorSlopes<double> ref;
-    const double expected = viscoroll::exterior_right(own, dq_own, q[k], x0, lambda[k], &ref);
+    viscoroll::line::ExteriorSlopes<double> ref;
+    const double expected = viscoroll::line::exterior_right(own, dq_own, q[k], x0, lambda[k], &ref);
     CAPTURE(k, expected, right[k], ref.x0, slopes[k].x0, ref.l, slopes[k].l);
     // Both integrate to rounding: the difference is a few ulps of the terms' size, |q| ln(l/x0)
     // (measured: at most 4.1e-16 of it, 9e-16 in the ends).

@@ -68,14 +68,14 @@ void run(int spectra, int max_terms) {
       continue;
     }
     CHECK((s.chi >= 0 || viscoroll::has_warning(s, viscoroll::WarningCode::chi_negative)));
-    CHECK(s.spectrum_error <= viscoroll::line_spectrum_budget<double>());
+    CHECK(s.spectrum_error <= viscoroll::line::line_spectrum_budget<double>());
     viscoroll::BemOptions options;
     options.grid = 24;
     const auto e = viscoroll::BemSolver(material, options)
                        .solve({.c1 = c1, .c2 = c2, .load = load, .speed = speed});
     INFO("bem: d " << e.d << ", chi " << e.chi);
     REQUIRE(e.converged);
-    const double budget = viscoroll::line_spectrum_budget<double>();
+    const double budget = viscoroll::line::line_spectrum_budget<double>();
     CHECK(std::abs(s.d / e.d - 1) <= 0.006 + budget);
     CHECK(std::abs(s.chi - e.chi) <= (0.015 + budget) * e.chi + 5e-5 * c1 * s.a_long_term);
   }

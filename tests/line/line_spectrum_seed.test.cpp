@@ -82,7 +82,7 @@ TEST_CASE("line spectrum: the 12-term rubber at 0 degC, 0.01 m/s, seeded from 0.
   // Three of its terms' share of the dissipation is within the line method's budget (S21): they
   // are folded into the compliance or dropped, the other nine solved for.
   CHECK(cold.active_terms == 9);
-  CHECK(cold.spectrum_error <= viscoroll::line_spectrum_budget<double>());
+  CHECK(cold.spectrum_error <= viscoroll::line::line_spectrum_budget<double>());
   // Inside the line theory's domain and its bounds (docs/theory.md section 13).
   CHECK(cold.l() > 3 * cold.a(0.0));
   CHECK(cold.a(0.0) <= cold.a_long_term);

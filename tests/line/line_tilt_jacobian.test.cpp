@@ -61,10 +61,11 @@ TEST_CASE("line tilt: the asymmetric residual's Jacobian against central differe
   const auto slow = viscoroll::static_line_contact(c1, c2, load_compliance);
   for (const double vtau : {0.1, 1.0, 10.0}) {
     for (const int terms : {2, 4}) {
-      const viscoroll::LineProblem<double> problem{
+      const viscoroll::line::LineProblem<double> problem{
           c1, c2, vtau, f, slow.a0, slow.l, c1 * slow.a0 * slow.a0 * slow.l / 3};
-      const viscoroll::LineResidual<double, Rule, viscoroll::ExteriorLeadingEdge, TiltedDrop> res(
-          problem, terms, viscoroll::LineBasis::t_squared, 1, 0.0, TiltedDrop{theta}, true);
+      const viscoroll::line::LineResidual<double, Rule, viscoroll::line::ExteriorLeadingEdge,
+                                          TiltedDrop>
+          res(problem, terms, viscoroll::LineBasis::t_squared, 1, 0.0, TiltedDrop{theta}, true);
       REQUIRE(res.unknowns() == 4 * terms + 5);
       REQUIRE(res.equations() == res.unknowns());
       Eigen::VectorXd x = res.pack(shape(slow), slow.d * 0.64);
@@ -83,17 +84,18 @@ TEST_CASE("line tilt: the asymmetric spectrum residual's Jacobian against centra
   for (const double v : {0.3, 1.0, 4.0}) {
     const auto lengths = viscoroll_test::three_term_lengths(v);
     const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
-    const viscoroll::LineProblem<double> problem{.c1 = c1,
-                                                 .c2 = c2,
-                                                 .vtau = 0,
-                                                 .f = 0,
-                                                 .a_ref = slow.a0,
-                                                 .l_ref = slow.l,
-                                                 .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
-                                                 .lengths = lengths};
+    const viscoroll::line::LineProblem<double> problem{
+        .c1 = c1,
+        .c2 = c2,
+        .vtau = 0,
+        .f = 0,
+        .a_ref = slow.a0,
+        .l_ref = slow.l,
+        .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
+        .lengths = lengths};
     for (const int terms : {2, 4}) {
-      const viscoroll::LineResidual<double, Rule, viscoroll::ExteriorLeadingEdge, TiltedDrop,
-                                    viscoroll::dynamic_memory_terms>
+      const viscoroll::line::LineResidual<double, Rule, viscoroll::line::ExteriorLeadingEdge,
+                                          TiltedDrop, viscoroll::dynamic_memory_terms>
           res(problem, terms, viscoroll::LineBasis::t_squared, 1, 0.0, TiltedDrop{theta}, true);
       REQUIRE(res.unknowns() == 8 * terms + 9);
       REQUIRE(res.equations() == res.unknowns());

@@ -21,7 +21,7 @@ using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
 // The paper's residual as a numerics::LeastSquaresProblem: it has no analytic Jacobian (the
 // iteration takes forward differences where jacobian() declines).
 struct PaperProblem {
-  const viscoroll::PaperLineResidual<double>& residual;
+  const viscoroll::line::PaperLineResidual<double>& residual;
   int unknowns() const { return residual.unknowns(); }
   int equations() const { return residual.equations(); }
   bool operator()(const Vector& x, Vector& r) const { return residual(x, r); }
@@ -41,7 +41,7 @@ Compared compare(double vtau) {
       .c1 = 1.0, .c2 = 0.0798291, .load = 2.0943951023931953, .speed = vtau};
   const auto l6 = solver.solve(scene);
   REQUIRE(l6.converged);
-  const viscoroll::PaperLineResidual<double> paper(solver.residual(scene).problem(), 4);
+  const viscoroll::line::PaperLineResidual<double> paper(solver.residual(scene).problem(), 4);
   Vector x = paper.pack(l6.shape, l6.d), r(paper.equations());
   REQUIRE(paper(x, r));
   const auto out = viscoroll::numerics::levenberg_marquardt(

@@ -121,7 +121,7 @@ TEST_CASE("static profile contact: a long flat part carries the strip of (G1) at
   CHECK(s.y_plus > 20);  // the ends lie on the crowns
   CHECK(s.half_length() > 50 * s.a(0.0));
   const double l = s.half_length(), c = s.centre();
-  const LineOperators<double, GaussLegendre<double, 16>> ops(l);
+  const line::LineOperators<double, GaussLegendre<double, 16>> ops(l);
   const auto f0 = [&](double u) { return s.f0(u + c); };
   for (const double y : {0.0, 3.3, 7.1, -11.0}) {
     const double a = s.a(y), f = s.f0(y);

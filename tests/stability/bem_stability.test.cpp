@@ -92,7 +92,7 @@ void check_invariants(const Cell<Real>& cell, const BemSolution<Real>& s) {
   CHECK(s.l > 0);
   CHECK(s.a0 > 0);
   CHECK(s.b0 - s.a0 < s.b0 + s.a0);
-  const auto glassy = viscoroll::hertz_contact(Real(1), cell.ratio(), cell.c(), cell.load());
+  const auto glassy = viscoroll::bem::hertz_contact(Real(1), cell.ratio(), cell.c(), cell.load());
   const Real n = Real(cell.grid);
   const Real ha_long = 1 / n,
              ha_glassy = std::cbrt(s.long_term.a * s.long_term.b / (glassy.a * glassy.b)) / n;
@@ -127,7 +127,7 @@ BemSolution<Real> check_cell(const Cell<Real>& cell) {
     bl = static_cast<long double>(s.grid.hy / 4 + speed * h.b);
     bd = static_cast<long double>(ha * ha / 5 + speed);
   } else if (cell.v >= 1e4) {
-    const auto h = viscoroll::hertz_contact(Real(1), cell.ratio(), cell.c(), cell.load());
+    const auto h = viscoroll::bem::hertz_contact(Real(1), cell.ratio(), cell.c(), cell.load());
     const Real alpha = (1 + f) * h.a / v;
     const Real e = alpha * std::log(1 / alpha) + h.b / v;
     ea = std::abs(static_cast<long double>(s.a0 - h.a));

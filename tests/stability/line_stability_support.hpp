@@ -113,7 +113,7 @@ long double check_fields(const Solution& s, Real p_tolerance) {
   }
   // The domain warnings (l/a(0) < 3), and one more at a least-squares minimum (not a root).
   const bool narrow = s.l() / s.a(Real(0)) < 3;
-  const auto domain = viscoroll::line_domain_warnings(s.shape);
+  const auto domain = viscoroll::line::line_domain_warnings(s.shape);
   CHECK(narrow == !domain.empty());
   CHECK(s.warnings.size() == domain.size() + (s.root ? 0 : 1));
   CHECK(s.warning_codes.size() == s.warnings.size());
@@ -191,7 +191,7 @@ void closed_form_matrix() {
       // ln(1 + f)/2 + 1) <= eps, u = a0/V tau), checked first: a rolling solve in
       // cpp_bin_float_50 would take minutes.
       const Real glassy_speed = 1 / (eps<Real>() * eps<Real>());
-      REQUIRE(viscoroll::strip_is_glassy(glassy_speed, exact<Real>(f), Real(1)));
+      REQUIRE(viscoroll::plane::strip_is_glassy(glassy_speed, exact<Real>(f), Real(1)));
       check_closed_form<Real, Quadrature>({0.0, f, rho}, glassy_speed, true);
     }
   }

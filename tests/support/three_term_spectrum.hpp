@@ -11,10 +11,10 @@ namespace viscoroll_test {
 
 /// The spectrum at speed v: retardation lengths v tau_k and the relaxation lengths from the exact
 /// conversion.
-inline viscoroll::SpectrumLengths<double> three_term_lengths(double v) {
+inline viscoroll::plane::SpectrumLengths<double> three_term_lengths(double v) {
   const std::vector<viscoroll::detail::SpectrumTerm<double>> creep{
       {2.0, 0.05 * v}, {3.0, 0.5 * v}, {4.0, 5 * v}};
-  viscoroll::SpectrumLengths<double> out;
+  viscoroll::plane::SpectrumLengths<double> out;
   for (const auto& t : creep) {
     out.retardation.push_back(t.q);
     out.creep_ratio += t.w;

@@ -30,7 +30,8 @@ TEST_CASE("validity (V1): the parabolic gap's error in d and chi is below (a0/R)
   // and rolling at V tau = a_H. The two gaps are solved on the same grid (32 elements), so the
   // difference is the profile's, not the discretisation's.
   for (const double a_h : {0.2, 0.3}) {
-    const double load = std::pow(a_h / viscoroll::hertz_contact(1.0, 0.1, (1 + f) * c, 1.0).a, 3);
+    const double load =
+        std::pow(a_h / viscoroll::bem::hertz_contact(1.0, 0.1, (1 + f) * c, 1.0).a, 3);
     for (const double speed : {0.0, a_h}) {
       viscoroll::BemOptions o;
       o.grid = 32;
@@ -58,7 +59,7 @@ TEST_CASE("validity (V3): the line theory's static error in d is below 0.13 (a0/
     const viscoroll::LineSolverD solver(viscoroll::StandardLinearSolid<double>(mu, nu, f, 1.0));
     const auto s = solver.solve(viscoroll::LineScene<double>{1.0, c2, 1.0, 1e-6});
     REQUIRE(s.converged);
-    const auto h = viscoroll::hertz_contact(1.0, c2, (1 + f) * c, 1.0);
+    const auto h = viscoroll::bem::hertz_contact(1.0, c2, (1 + f) * c, 1.0);
     const double slender = s.l() / s.a(0.0);
     const double coefficient = std::abs(s.d / h.d - 1) * slender * slender;
     INFO("c2 " << c2 << " l/a0 " << slender << " d error " << s.d / h.d - 1);

@@ -40,7 +40,7 @@ template <RealScalar Real>
 Real hertz_length(Real c1, Real c2, Real cp) {
   if (!(c2 > Real(1e-10) * c1)) return std::numeric_limits<Real>::infinity();
   if (!(c2 < Real(1e10) * c1)) return Real(0);
-  return hertz_contact(c1, c2, cp, Real(1)).b;
+  return bem::hertz_contact(c1, c2, cp, Real(1)).b;
 }
 
 /// The estimate of (B14): the contact's centre yc and half length l*, and the curvature C2g that

@@ -255,7 +255,7 @@ struct BemSolution {
   Real load;              ///< hx hy sum p (equals the scene's load to the tolerance)
   /// The static Hertz contact of the long-term compliance (on a substrate, of that compliance
   /// times the sizing factor of (B19): the estimate that sized the grid)
-  HertzContact<Real> long_term;
+  bem::HertzContact<Real> long_term;
   int contact_cells;   ///< cells with p > 0
   bool converged;      ///< every claimed quantity holds to the tolerance (else see reason)
   std::string reason;  ///< "converged", or why not

@@ -111,7 +111,7 @@ class BemSolver {
 
   /// Hertz's contact (B8) of the scene on the long-term compliance (1 + f) c: the V tau = 0
   /// solution, which sizes the grid and scales d.
-  HertzContact<Real> long_term_hertz(const BemScene<Real>& scene) const;
+  bem::HertzContact<Real> long_term_hertz(const BemScene<Real>& scene) const;
 
  private:
   /// The memory terms that act on the grid. A term whose memory length L = V tau_k is glassy on
@@ -186,7 +186,7 @@ class BemSolver {
   /// by a/(a + V tau_k).
   numerics::ActiveSetState<Real> initial_state(const BemScene<Real>& scene,
                                                const BemGrid<Real>& grid,
-                                               const HertzContact<Real>& hertz,
+                                               const bem::HertzContact<Real>& hertz,
                                                const std::vector<PronyTerm<Real>>& terms,
                                                Real compliance, const Solution* start) const;
 
@@ -206,7 +206,7 @@ class BemSolver {
   /// g = u - d + h of the cell centres (Eqs. 13, 27) under the load hx hy sum p = P, its load row
   /// and gap tolerance in units of the long-term Hertz penetration.
   Solution iterate(const BemScene<Real>& scene, const BemGrid<Real>& grid,
-                   const HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
+                   const bem::HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
                    const std::vector<Complex>& symbol, const std::vector<PronyTerm<Real>>& terms,
                    Real compliance, int length_exponent, const Solution* start,
                    const bem::InfluenceTable<Real, Quadrature>* local = nullptr) const;
@@ -215,8 +215,9 @@ class BemSolver {
   /// cells), the edges (B12) and the residual, the largest violation of p >= 0, g >= 0, p g = 0
   /// or of the load relative to d of Hertz (B11). A contact cell on the grid's border fails it.
   static Solution measure(const BemScene<Real>& scene, const BemGrid<Real>& grid,
-                          const HertzContact<Real>& hertz, const bem::ConvolutionOperator<Real>& op,
-                          const std::vector<Real>& h, numerics::ActiveSetState<Real> state,
+                          const bem::HertzContact<Real>& hertz,
+                          const bem::ConvolutionOperator<Real>& op, const std::vector<Real>& h,
+                          numerics::ActiveSetState<Real> state,
                           const numerics::ActiveSetReport& report);
 
   /// What a converged solution does not claim: a contact under three cells across, where (B13)
@@ -265,14 +266,14 @@ class BemSolver {
   /// F < 1) keeps the cells of the sized ellipse but covers along y what the half space's grid
   /// covers: bem_scene() sized C2 for the half space, and a profile's contact is as long as its
   /// drop allows (a flat roller's, its flat length), not shorter by F^(1/3) as an ellipsoid's.
-  BemGrid<Real> grid_in_units(const Scaled& u, const HertzContact<Real>& hertz, int n,
+  BemGrid<Real> grid_in_units(const Scaled& u, const bem::HertzContact<Real>& hertz, int n,
                               Real across = 0) const;
 
   /// Hertz's long-term contact (B8) in the units of `u`, on the compliance (1 + f) c times the
   /// substrate's sizing factor (B19).
-  static HertzContact<Real> hertz_in_units(const Scaled& u, Real creep_ratio) {
-    return hertz_contact(u.scene.c1, u.scene.c2, (1 + creep_ratio) * u.compliance * u.sizing,
-                         u.scene.load);
+  static bem::HertzContact<Real> hertz_in_units(const Scaled& u, Real creep_ratio) {
+    return bem::hertz_contact(u.scene.c1, u.scene.c2, (1 + creep_ratio) * u.compliance * u.sizing,
+                              u.scene.load);
   }
 
   /// (B19): the factor F = T(kappa / min(a, b)) of the Hertz contact (a, b) on the compliance
@@ -324,9 +325,9 @@ auto BemSolver<Real, Material, Quadrature>::grid_for(const BemScene<Real>& scene
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::long_term_hertz(const BemScene<Real>& scene) const
-    -> HertzContact<Real> {
+    -> bem::HertzContact<Real> {
   const Scaled u = scaled(scene);
-  const HertzContact<Real> h = hertz_in_units(u, material_.creep_ratio());
+  const bem::HertzContact<Real> h = hertz_in_units(u, material_.creep_ratio());
   const auto inputs = [&] { return u.inputs; };
   return {
       detail::representable(h.a, u.length, "the long-term Hertz semi-axis a", inputs, false),

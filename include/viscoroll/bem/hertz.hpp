@@ -27,7 +27,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 
-namespace viscoroll {
+namespace viscoroll::bem {
 
 /// Hertz's elliptical contact: semi-axes along x and y, penetration and peak pressure.
 template <RealScalar Real>
@@ -112,4 +112,4 @@ HertzContact<Real> hertz_contact(Real c1, Real c2, Real compliance, Real load) {
   return h;
 }
 
-}  // namespace viscoroll
+}  // namespace viscoroll::bem

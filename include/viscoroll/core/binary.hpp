@@ -22,7 +22,7 @@
 #include <viscoroll/core/concepts.hpp>
 #include <viscoroll/core/validate.hpp>
 
-namespace viscoroll {
+namespace viscoroll::detail {
 
 /// x = m 2^e with 1 <= |m| < 2 (m = e = 0 for x = 0): a number apart from its binary exponent,
 /// so that products and quotients of numbers near the ends of the range neither overflow nor
@@ -33,8 +33,6 @@ struct Binary {
   Real m;  ///< significand, 1 <= |m| < 2, or 0
   int e;   ///< binary exponent
 };
-
-namespace detail {
 
 /// The biased exponent field of an IEEE binary32 or binary64 Real, or of the x87 80-bit long
 /// double, read (get) and written (set) inline: frexp and ldexp are library calls, which would
@@ -84,10 +82,6 @@ struct exponent_field<long double> {
   }
 };
 
-}  // namespace detail
-
-namespace detail {
-
 /// binary() by frexp: for zero, subnormal numbers and types without an exponent_field.
 template <RealScalar Real>
 Binary<Real> binary_by_frexp(Real x) {
@@ -97,8 +91,6 @@ Binary<Real> binary_by_frexp(Real x) {
   const Real m = frexp(x, &e);  // 1/2 <= |m| < 1
   return {2 * m, e - 1};
 }
-
-}  // namespace detail
 
 /// x as m 2^e (Binary), exactly (a subnormal x too); x finite.
 template <RealScalar Real>
@@ -138,8 +130,6 @@ Binary<Real> binary_sqrt(Real m, int e) {
   const Binary<Real> root = binary(sqrt(m));
   return {root.m, root.e + e / 2};
 }
-
-namespace detail {
 
 /// m 2^e in decimal with three significant digits, also where it is outside Real's range.
 template <RealScalar Real>
@@ -185,6 +175,4 @@ Real representable(Real value, int exponent, std::string_view what, const Inputs
   throw_unrepresentable(value, exponent, what, inputs);
 }
 
-}  // namespace detail
-
-}  // namespace viscoroll
+}  // namespace viscoroll::detail

@@ -119,6 +119,16 @@ void add_warning(Solution& s, WarningCode code, std::string text) {
   s.warnings.push_back(std::move(text));
   s.warning_codes.push_back(code);
 }
+/// Whether a solution carries a warning with `code`.
+template <class Solution>
+bool has_warning(const Solution& s, WarningCode code) {
+  for (const WarningCode c : s.warning_codes)
+    if (c == code) return true;
+  return false;
+}
+
+namespace detail {
+
 /// Adds each of `list` to a solution (add_warning).
 template <class Solution>
 void append_warnings(Solution& s, std::vector<Warning> list) {
@@ -131,13 +141,6 @@ void copy_warnings(To& to, const From& from) {
   to.warning_codes.insert(to.warning_codes.end(), from.warning_codes.begin(),
                           from.warning_codes.end());
 }
-/// Whether a solution carries a warning with `code`.
-template <class Solution>
-bool has_warning(const Solution& s, WarningCode code) {
-  for (const WarningCode c : s.warning_codes)
-    if (c == code) return true;
-  return false;
-}
 /// Sets a solution's stop: not converged, with `code` and `reason`.
 template <class Solution>
 void set_stop(Solution& s, StopCode code, std::string reason) {
@@ -145,5 +148,7 @@ void set_stop(Solution& s, StopCode code, std::string reason) {
   s.code = code;
   s.reason = std::move(reason);
 }
+
+}  // namespace detail
 
 }  // namespace viscoroll

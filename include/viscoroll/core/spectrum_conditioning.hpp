@@ -40,7 +40,7 @@ SpectrumClasses<Real> classify_spectrum(const Terms& terms, Real speed, int leng
                                         Real relaxed_below, Real width, Real creep_ratio,
                                         Real budget = 0, Real reach = 0) {
   SpectrumClasses<Real> out;
-  const auto v = binary<Real>(speed);
+  const auto v = detail::binary<Real>(speed);
   for (std::size_t k = 0; k < terms.size(); ++k) {
     const Real f = terms[k].f, tau = terms[k].tau;
     if (!(f > 0)) continue;
@@ -48,11 +48,11 @@ SpectrumClasses<Real> classify_spectrum(const Terms& terms, Real speed, int leng
       out.relaxed += f;
       continue;
     }
-    const auto t = binary<Real>(tau);
-    const Real lambda = times_power_of_two(Real(v.m * t.m), v.e + t.e - length);
+    const auto t = detail::binary<Real>(tau);
+    const Real lambda = detail::times_power_of_two(Real(v.m * t.m), v.e + t.e - length);
     if (lambda <= relaxed_below)
       out.relaxed += f;
-    else if (strip_is_glassy(lambda, creep_ratio, width))
+    else if (plane::strip_is_glassy(lambda, creep_ratio, width))
       out.glassy += f;
     else
       out.active.push_back({f, lambda});
@@ -102,7 +102,7 @@ SpectrumClasses<Real> classify_spectrum(const Terms& terms, Real speed, int leng
 /// the two leading-edge rows (S7) become parallel). Lengths ascending and interlacing. The sum is
 /// formed in logarithms: +inf where it exceeds the largest finite value.
 template <class Real>
-Real spectrum_amplification(const SpectrumLengths<Real>& lengths) {
+Real spectrum_amplification(const plane::SpectrumLengths<Real>& lengths) {
   using std::abs;
   using std::exp;
   using std::log;
@@ -182,7 +182,7 @@ Real cluster_merge_bound(const std::vector<SpectrumTerm<Real>>& cluster) {
 template <class Real>
 struct ConditionedSpectrum {
   std::vector<SpectrumTerm<Real>> terms;  ///< (weight f_k, length lambda_k), ascending
-  SpectrumLengths<Real> lengths;          ///< their lengths (empty for no term)
+  plane::SpectrumLengths<Real> lengths;   ///< their lengths (empty for no term)
   Real amplification = 1;                 ///< spectrum_amplification of the terms kept
   Real spectrum_error = 0;                ///< the bound (S19) of the merging
   int given_terms = 0;                    ///< active terms before merging near-equal times
@@ -200,7 +200,7 @@ ConditionedSpectrum<Real> condition_spectrum(std::vector<SpectrumTerm<Real>> act
     members.push_back({t});
   }
   const auto lengths_of = [](const std::vector<SpectrumTerm<Real>>& terms) {
-    SpectrumLengths<Real> lengths;
+    plane::SpectrumLengths<Real> lengths;
     for (const auto& t : terms) {
       lengths.retardation.push_back(t.q);
       lengths.creep_ratio += t.w;

@@ -32,6 +32,8 @@
 
 namespace viscoroll {
 
+namespace plane {
+
 /// The lengths of a spectrum at one speed, in one unit of length: retardation lengths
 /// lambda_k = V tau_k and relaxation lengths mu_i = V rho_i, both ascending and interlacing
 /// (mu_1 < lambda_1 < mu_2 < ... < lambda_M), and the creep ratio F = sum f_k.
@@ -84,6 +86,8 @@ struct SpectrumStripSlopes {
   Real b_a{}, g0_a{}, pig1_a{}, centroid_a{};
   ///@}
 };
+
+}  // namespace plane
 
 namespace detail {
 
@@ -151,6 +155,8 @@ void solve_dense(std::vector<Real>& X, std::vector<Real>& rhs, std::size_t n) {
 }
 
 }  // namespace detail
+
+namespace plane {
 
 /// Solves (S5)-(S7) at half width a > 0. Every length of `lengths` and a in one unit; the
 /// unknowns are formed in units of a and returned in the caller's. With `right` (M values, the
@@ -313,6 +319,8 @@ SpectrumStrip<Real> spectrum_strip(Real a, const SpectrumLengths<Real>& lengths,
   return out;
 }
 
+}  // namespace plane
+
 /// The pressure across a plane strip of any material: a weighted sum of one-term strips (S9),
 /// p = sum_i A_i p_i, p_i the one-term strip of relaxation length mu_i with G = u_i and odd
 /// coefficient w_i - b, each a StripPressure. A material with at most one memory term active
@@ -328,8 +336,8 @@ class PlaneStrip {
   explicit PlaneStrip(StripPressure<Real, Quadrature> one)
       : units_{}, a_(one.half_width()), b_(one.offset()), one_(std::move(one)) {}
   /// The strip of a spectrum (S9), all arguments in `units` (StripUnits) as StripPressure's.
-  PlaneStrip(StripUnits units, Real c1, Real a, const SpectrumStrip<Real>& strip,
-             const SpectrumLengths<Real>& lengths, Real compliance)
+  PlaneStrip(plane::StripUnits units, Real c1, Real a, const plane::SpectrumStrip<Real>& strip,
+             const plane::SpectrumLengths<Real>& lengths, Real compliance)
       : units_(units), a_(a), b_(strip.b), layer_(lengths.relaxation), spectrum_(true) {
     const Real creep = lengths.creep_ratio;
     for (std::size_t i = 0; i < strip.u.size(); ++i)
@@ -396,9 +404,9 @@ class PlaneStrip {
  private:
   /// x in the strip's units to the caller's (the strip of one term keeps a and b in the
   /// caller's: its units_ are 2^0).
-  Real length(Real x) const { return times_power_of_two(x, units_.length); }
+  Real length(Real x) const { return detail::times_power_of_two(x, units_.length); }
 
-  StripUnits units_{};
+  plane::StripUnits units_{};
   Real a_{}, b_{};
   std::vector<Real> layer_;
   std::optional<StripPressure<Real, Quadrature>> one_;  // the strip of one term (no allocation)

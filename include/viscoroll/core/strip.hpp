@@ -36,6 +36,8 @@
 
 namespace viscoroll {
 
+namespace plane {
+
 /// alpha = (1 + f) a / V tau of Eq. (37): the strip's half width over the length V tau/(1 + f)
 /// on which the pressure of Eq. (35) relaxes.
 template <RealScalar Real>
@@ -100,6 +102,8 @@ bool strip_is_glassy(Real vtau, Real f, Real a0) {
   return u * (boost::math::constants::ln_two<Real>() - log(u) + log(1 + f) / 2 + 1) <= eps;
 }
 
+}  // namespace plane
+
 /// Location and value of the largest pressure on a strip.
 template <RealScalar Real>
 struct PressurePeak {
@@ -153,6 +157,8 @@ PressurePeak<Real> strip_peak(Real lo, Real hi, Real edge, const std::vector<Rea
 }
 }  // namespace detail
 
+namespace plane {
+
 /// The units in which a strip is computed, powers of two: a length x is held as x 2^-length, the
 /// curvature C1 as C1 2^-curvature and the compliance c as c 2^-compliance; G (a length squared)
 /// as G 4^-length. Then the pseudo-pressure p* of (32) carries 2^(curvature + length), the
@@ -165,6 +171,8 @@ struct StripUnits {
   int curvature = 0;   ///< binary exponent of the unit of C1
   int compliance = 0;  ///< binary exponent of the unit of the compliance c
 };
+
+}  // namespace plane
 
 /// Pressure on one strip of the contact, Eqs. (32) and (35), computed in the strip's units
 /// (StripUnits): x and the pressure are converted at the interface only.
@@ -180,19 +188,19 @@ class StripPressure {
   /// f: creep ratio; compliance: (1 - nu) / (2 pi mu_D). vtau == 0 is the static strip. The
   /// units are those in which a, C1 and the compliance lie in [1, 2).
   StripPressure(Real c1, Real a, Real b, Real g, Real vtau, Real f, Real compliance)
-      : units_{binary(a).e, binary(c1).e, binary(compliance).e}, f_(f) {
+      : units_{detail::binary(a).e, detail::binary(c1).e, detail::binary(compliance).e}, f_(f) {
     const int length = units_.length;
-    c1_ = times_power_of_two(c1, -units_.curvature);
-    a_ = times_power_of_two(a, -length);
-    b_ = times_power_of_two(b, -length);
-    g_ = times_power_of_two(g, -2 * length);
-    vtau_ = times_power_of_two(vtau, -length);
-    c_ = times_power_of_two(compliance, -units_.compliance);
+    c1_ = detail::times_power_of_two(c1, -units_.curvature);
+    a_ = detail::times_power_of_two(a, -length);
+    b_ = detail::times_power_of_two(b, -length);
+    g_ = detail::times_power_of_two(g, -2 * length);
+    vtau_ = detail::times_power_of_two(vtau, -length);
+    c_ = detail::times_power_of_two(compliance, -units_.compliance);
     odd_ = vtau_ - b_;
   }
 
   /// The same strip with c1, a, b, g, vtau and compliance given in `units` (StripUnits).
-  StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
+  StripPressure(plane::StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
                 Real compliance)
       : StripPressure(units, c1, a, b, g, vtau, f, compliance, Real(1), vtau - b) {}
 
@@ -201,7 +209,7 @@ class StripPressure {
   /// relaxation term of a spectrum's strip is such a strip (docs/theory.md, (S9)); (35) holds
   /// with vtau and f, and the reconstruction from the trailing edge needs (36) in the form
   /// even a^2 I1(alpha)/alpha - odd a I1(alpha) + g I0(alpha) = 0.
-  StripPressure(StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
+  StripPressure(plane::StripUnits units, Real c1, Real a, Real b, Real g, Real vtau, Real f,
                 Real compliance, Real even, Real odd)
       : units_(units),
         c1_(c1),
@@ -225,17 +233,19 @@ class StripPressure {
 
   /// Eq. (32): the pseudo-pressure p*(x); zero outside the strip.
   Real pseudo_pressure(Real x) const {
-    return times_power_of_two(pseudo_in_units(in_units(x)), units_.curvature + units_.length);
+    return detail::times_power_of_two(pseudo_in_units(in_units(x)),
+                                      units_.curvature + units_.length);
   }
 
   /// Eq. (35): the contact pressure p(x); zero outside the strip.
   Real pressure(Real x) const {
-    return times_power_of_two(pressure_in_units(in_units(x)), pressure_exponent());
+    return detail::times_power_of_two(pressure_in_units(in_units(x)), pressure_exponent());
   }
 
   /// dp/dx from Eq. (7): c V tau p' = c (1 + f) p - p*; needs V tau > 0.
   Real pressure_slope(Real x) const {
-    return times_power_of_two(slope_in_units(in_units(x)), units_.curvature - units_.compliance);
+    return detail::times_power_of_two(slope_in_units(in_units(x)),
+                                      units_.curvature - units_.compliance);
   }
 
   /// The largest pressure on the strip and where it sits.
@@ -263,8 +273,8 @@ class StripPressure {
  private:
   static Real pi() { return boost::math::constants::pi<Real>(); }
   /// x (caller's units) in the strip's units, and back.
-  Real in_units(Real x) const { return times_power_of_two(x, -units_.length); }
-  Real length(Real x) const { return times_power_of_two(x, units_.length); }
+  Real in_units(Real x) const { return detail::times_power_of_two(x, -units_.length); }
+  Real length(Real x) const { return detail::times_power_of_two(x, units_.length); }
   /// The binary exponent of the unit of pressure (StripUnits).
   int pressure_exponent() const { return units_.curvature - units_.compliance + units_.length; }
 
@@ -283,7 +293,7 @@ class StripPressure {
     const Real ahead = (b_ + a_) - x, behind = x - (b_ - a_);
     if (!(ahead > 0 && behind > 0)) return Real(0);
     if (vtau_ == 0) return pseudo_in_units(x) / (c_ * (1 + f_));  // Eq. (7) with V tau = 0
-    const Real alpha = strip_alpha(a_, vtau_, f_);
+    const Real alpha = plane::strip_alpha(a_, vtau_, f_);
     const Real prefactor = c1_ / (2 * pi() * c_ * vtau_);
     const Real one_minus_s = ahead / a_, one_plus_s = behind / a_;
     if (one_plus_s < 1 && alpha * one_plus_s <= 1)
@@ -395,7 +405,7 @@ class StripPressure {
     return Quadrature::integrate(integrand, Real(0), psi_s);
   }
 
-  StripUnits units_;
+  plane::StripUnits units_;
   Real c1_, a_, b_, g_, vtau_, f_, c_;  // in units_
   Real odd_;                            // the coefficient of xi in (32): V tau - b unless given
   Real even_ = 1;                       // the coefficient of a^2 - xi^2 in (32): 1 unless given

@@ -24,7 +24,7 @@
 #include <viscoroll/line/line_operators.hpp>
 #include <viscoroll/line/line_shape.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 /// The node sets of the line residual at N = `terms` Chebyshev terms of the shape, in the
 /// expansion variable `basis` (with its scale e of LineBasis::s_mapped, else 0), for V tau > 0 and
@@ -160,4 +160,4 @@ class LineNodeRule {
   Real t_max_;      ///< the end of the t-range, -ln(tol) + 8 (e^-t below tol e^-8 beyond)
 };
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line

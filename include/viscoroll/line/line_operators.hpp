@@ -31,7 +31,7 @@
 #include <viscoroll/line/detail/graded_panels.hpp>
 #include <viscoroll/line/detail/memory_kernel_series.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 /// The quadrature nodes of the line integrals at one point y of (-l, l).
 ///
@@ -361,7 +361,7 @@ class LineOperators {
   template <class F>
   Real finite_part(const F& f, Real y) const {
     const LineNodes<Real> nd = smooth_nodes(y);
-    return viscoroll::finite_part(nd, differences(nd, f, f(y)));
+    return viscoroll::line::finite_part(nd, differences(nd, f, f(y)));
   }
 
   /// Lambda[F](y) = FP[F](y) + F(y) ln 4(l^2 - y^2): Eq. (24), the near-field operator A_0.
@@ -369,7 +369,7 @@ class LineOperators {
   Real near_field(const F& f, Real y) const {
     const LineNodes<Real> nd = smooth_nodes(y);
     const Real fy = f(y);
-    return viscoroll::near_field(nd, differences(nd, f, fy), fy);
+    return viscoroll::line::near_field(nd, differences(nd, f, fy), fy);
   }
 
   /// FP[F](y) + F(y) ln[16 (l^2 - y^2) / a^2]: the left side of Eq. (34) at half width a > 0.
@@ -378,7 +378,7 @@ class LineOperators {
     detail::require_positive("a", a);
     const LineNodes<Real> nd = smooth_nodes(y);
     const Real fy = f(y);
-    return viscoroll::near_field_strip(nd, differences(nd, f, fy), fy, a);
+    return viscoroll::line::near_field_strip(nd, differences(nd, f, fy), fy, a);
   }
 
   /// I[F, x](y), Eq. (41), x > 0.
@@ -387,7 +387,7 @@ class LineOperators {
     detail::require_positive("x", x);
     const LineNodes<Real> nd = nodes(y, x, 1);  // poles of the kernel at s = +-i x
     const Real fy = f(y);
-    return viscoroll::extended(nd, differences(nd, f, fy), fy, x);
+    return viscoroll::line::extended(nd, differences(nd, f, fy), fy, x);
   }
 
   /// d/dx I[F, x](y), the derivative of Eq. (41), x > 0.
@@ -396,7 +396,7 @@ class LineOperators {
     detail::require_positive("x", x);
     const LineNodes<Real> nd = nodes(y, x, 1);
     const Real fy = f(y);
-    return viscoroll::extended_dx(nd, differences(nd, f, fy), fy, x);
+    return viscoroll::line::extended_dx(nd, differences(nd, f, fy), fy, x);
   }
 
  private:
@@ -408,4 +408,4 @@ class LineOperators {
   LineOperatorOptions options_;
 };
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line

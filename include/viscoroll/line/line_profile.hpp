@@ -50,6 +50,8 @@ struct LineProfileScene {
   }
 };
 
+namespace line {
+
 /// The RollerDrop of a profile in the line solver's units: lengths in 2^length, curvatures in
 /// 2^curvature, so that h_u(y) = h(2^length y) 2^-(curvature + 2 length) and h_u'(y) =
 /// h'(2^length y) 2^-(curvature + length), exact (powers of two).
@@ -64,14 +66,14 @@ class ProfileDrop {
   /// h_u(y) = h(2^length y) 2^-(curvature + 2 length).
   template <class Problem>
   Real drop(const Problem&, Real y) const {
-    return times_power_of_two(profile_.drop(times_power_of_two(y, length_)),
-                              -(curvature_ + 2 * length_));
+    return detail::times_power_of_two(profile_.drop(detail::times_power_of_two(y, length_)),
+                                      -(curvature_ + 2 * length_));
   }
   /// h_u'(y) = h'(2^length y) 2^-(curvature + length).
   template <class Problem>
   Real drop_slope(const Problem&, Real y) const {
-    return times_power_of_two(profile_.drop_slope(times_power_of_two(y, length_)),
-                              -(curvature_ + length_));
+    return detail::times_power_of_two(profile_.drop_slope(detail::times_power_of_two(y, length_)),
+                                      -(curvature_ + length_));
   }
 
  private:
@@ -111,5 +113,7 @@ LineShape<Real> profile_line_shape(const StaticProfileContact<Real>& s, Real a_r
   }
   return shape;
 }
+
+}  // namespace line
 
 }  // namespace viscoroll

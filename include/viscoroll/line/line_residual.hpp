@@ -18,19 +18,12 @@
 // (LineNodeRule, docs/theory.md section 7) of the differences F(y') - F(y), taken by the
 // operators of line_operators.hpp: near_field_strip for (34), exterior_right for (L6).
 //
-// One memory term is the fast path: its strip is closed-form in a and b ((32)-(36), (46)), so the
-// strip functions are pointwise functions of the unknowns. A spectrum of M >= 2 terms
-// (docs/theory.md section 14, (S11)-(S15)) has M leading-edge conditions per strip, one per
-// retardation length lambda_k = V tau_k, whose right sides are (L6) at lambda_k of
-// Q_k = F0 - F1/lambda_k (S12); (34) gains the spectrum's constant (S13). The strip's unknowns
-// are eliminated at each point by its linear system (core/spectrum_strip.hpp), and two more
-// functions of y join the unknowns, gamma = G0/a^2 and the strip's centroid kappa, which carry F0
-// and F1 to the line integrals (S14); at each point the strip's b, G0/a^2 and centroid must equal
-// the expanded ones. Shape, collocation, node rule, (34) and the load are the same for both.
-//
-// The closed-form path's Jacobian is in line/detail/line_residual_jacobian.hpp, the spectrum's
-// residual and Jacobian in line/detail/line_residual_spectrum.hpp, both included at the end of
-// this header.
+// One memory term is the fast path: its strip is closed-form in a and b ((32)-(36), (46)). A
+// spectrum of M >= 2 terms (docs/theory.md section 14) has M leading-edge conditions per strip,
+// right sides (L6) at lambda_k = V tau_k (S12), and (34) gains its constant (S13); two more
+// functions of y, gamma = G0/a^2 and the centroid kappa, join the unknowns and carry the strips
+// to the line integrals (S14). Shape, collocation, node rule, (34) and the load are shared. The
+// kernels of each are in line/detail/line_residual_jacobian.hpp and line_residual_spectrum.hpp.
 #pragma once
 
 #include <Eigen/Core>
@@ -51,7 +44,7 @@
 #include <viscoroll/quadrature/gauss_legendre.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 /// The scene's constants seen by the residual, lengths in one unit. One memory term: V tau > 0
 /// and f > 0, `lengths` empty. A spectrum: `lengths` at the scene's speed (its lambda_k = V tau_k,
@@ -65,7 +58,7 @@ struct LineProblem {
   Real a_ref;        ///< long-term static half width at y = 0 (scale of a, b)
   Real l_ref;        ///< long-term static half length (scale of l)
   Real load_target;  ///< int F0 dy = (1 + f) c P, Eq. (47) with (52); (1 + F) c P for a spectrum
-  SpectrumLengths<Real> lengths{};  ///< a spectrum's lengths; empty for one term
+  plane::SpectrumLengths<Real> lengths{};  ///< a spectrum's lengths; empty for one term
 };
 
 /// Leading-edge policy of LineResidual: the right side of the leading-edge condition in the
@@ -282,11 +275,14 @@ class LineResidual {
     Real sum = 0;
     for (std::size_t j = 0; j < nodes.size(); ++j)
       if constexpr (MemoryTerms != 1)
-        sum += weights[j] *
-               (spectrum_ ? functions(s, mo, nodes[j]).f0
-                          : strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0);
+        sum +=
+            weights[j] *
+            (spectrum_
+                 ? functions(s, mo, nodes[j]).f0
+                 : plane::strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0);
       else
-        sum += weights[j] * strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
+        sum += weights[j] *
+               plane::strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
     return sum;
   }
 
@@ -331,13 +327,14 @@ class LineResidual {
 
   /// One term: (34) and the leading-edge row at one point from the finite-part differences df0_j
   /// and the right side of the leading-edge condition; returns the terms of the row's left side.
-  EdgeTerms point_rows(Real d, Real y, const StripFunctions<Real>& here, const LineNodes<Real>& nd,
-                       const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const;
+  EdgeTerms point_rows(Real d, Real y, const plane::StripFunctions<Real>& here,
+                       const LineNodes<Real>& nd, const std::vector<Real>& df0, Real right,
+                       Real& r34, Real& rle) const;
 
   /// One term: G (36), F0 (33), Q (46) (as strip_functions) with their partial derivatives in a
   /// and b, and I1/I0 and its derivative; all zero for a <= 0 (beyond the ends).
   struct StripDerivatives {
-    StripFunctions<Real> value;
+    plane::StripFunctions<Real> value;
     Real g_a, g_b, f0_a, f0_b, q_a, q_b, ri, ri_x;
   };
   StripDerivatives strip_derivatives(Real a, Real b) const;
@@ -474,12 +471,12 @@ auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::operator()(
   return true;
 }
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line
 
 #include <viscoroll/line/detail/line_residual_jacobian.hpp>
 #include <viscoroll/line/detail/line_residual_spectrum.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 // Compiled mode (docs/building.md): with VISCOROLL_COMPILED, which the CMake target
 // viscoroll::compiled sets (VISCOROLL_COMPILED_DOUBLE, from viscoroll::compiled_double: the double
@@ -497,4 +494,4 @@ extern template class LineResidual<double, GaussLegendre<double, 12>>;
 extern template class LineResidual<double, GaussLegendre<double, 6>>;
 #endif
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line

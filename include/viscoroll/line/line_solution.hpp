@@ -18,6 +18,8 @@
 
 namespace viscoroll {
 
+namespace line {
+
 /// The budget of docs/theory.md (S21): a spectrum's fastest and slowest terms whose share of the
 /// dissipation (and of the penetration) is within 1e-3 in all are folded into the compliance or
 /// dropped by the line method, a tenth of its stated error against the exact solution (1% in d
@@ -26,6 +28,8 @@ template <class Real>
 Real line_spectrum_budget() {
   return Real(1e-3);
 }
+
+}  // namespace line
 
 /// The line-contact solution, for any material: the contact zone, the penetration, the line
 /// functions of Section 5 and the rolling friction of Section 6. A material with one memory term
@@ -146,7 +150,7 @@ struct LineSolution {
   /// a, b, G, F0 and Q at y (StripFunctions): the strip's (36), (33), (46) with at most one
   /// active term; with two or more, G0 = gamma a^2 and F0 = C1 a^2 (1/4 + gamma/2) (Eq. 33 with
   /// (S8)) from the moments, and Q NaN.
-  StripFunctions<Real> functions(Real y) const {
+  plane::StripFunctions<Real> functions(Real y) const {
     const Real a = shape.a(y), b = shape.b(y);
     if (!has_pressure()) {
       if (!(a > 0)) return {a, b, Real(0), Real(0), std::numeric_limits<Real>::quiet_NaN()};
@@ -156,9 +160,11 @@ struct LineSolution {
               std::numeric_limits<Real>::quiet_NaN()};
     }
     if (!(vtau > 0) || !(f > 0) || !(a > 0)) return {a, b, Real(0), c1 * a * a / 4, Real(0)};
-    return strip_functions(c1, a, b, vtau, f);
+    return plane::strip_functions(c1, a, b, vtau, f);
   }
 };
+
+namespace line {
 
 /// The line theory's domain (Section 3: the contact is slender, a(y) << l): a warning when
 /// l/a(0) < 3, and one when a(y) somewhere reaches l/3 (a(y) can exceed a(0), as at the dip of
@@ -236,5 +242,7 @@ std::vector<Warning> line_chi_sign_warnings(bool converged, Real chi) {
           "the method's accuracy (the bem method resolves it)";
   return {{WarningCode::chi_negative, text.str()}};
 }
+
+}  // namespace line
 
 }  // namespace viscoroll

@@ -122,13 +122,13 @@ class LineSolver {
                          const Solution* start = nullptr) const;
 
   /// The residual assembly for a scene (for tests and for users who drive their own iteration).
-  LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const requires
+  line::LineResidual<Real, Quadrature> residual(const LineScene<Real>& scene) const requires
       SingleTimeModel<Material> {
     scene.validate();
     const Real c = material_.instantaneous_compliance();
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const auto slow = static_line_contact(scene.c1, scene.c2, (1 + memory.f) * c * scene.load);
-    return LineResidual<Real, Quadrature>(
+    return line::LineResidual<Real, Quadrature>(
         problem(Units{scene.c1, scene.c2, 0, 0}, slow, memory.f, scene.speed * memory.tau),
         options_.terms, options_.basis, options_.oversampling, Real(options_.quadrature_tolerance));
   }
@@ -145,17 +145,19 @@ class LineSolver {
   static std::pair<Units, StaticLineContact<Real>> ellipse_units(const LineScene<Real>& scene,
                                                                  Real c, Real creep_ratio,
                                                                  const Inputs& inputs) {
-    const auto k1 = binary<Real>(scene.c1), k2 = binary<Real>(scene.c2), cc = binary<Real>(c);
-    const auto load = binary<Real>(scene.load), creep = binary<Real>(1 + creep_ratio);
+    const auto k1 = detail::binary<Real>(scene.c1), k2 = detail::binary<Real>(scene.c2),
+               cc = detail::binary<Real>(c);
+    const auto load = detail::binary<Real>(scene.load),
+               creep = detail::binary<Real>(1 + creep_ratio);
     detail::representable(Real(k2.m / k1.m), k2.e - k1.e, "c2/c1", inputs, false);
-    const Real c2 = times_power_of_two(k2.m, k2.e - k1.e);
-    const auto slow_units = static_line_contact_in_units<Real>(
+    const Real c2 = detail::times_power_of_two(k2.m, k2.e - k1.e);
+    const auto slow_units = line::static_line_contact_in_units<Real>(
         k1.m, c2, {creep.m * cc.m * load.m, creep.e + cc.e + load.e}, k1.e);
     return {Units{k1.m, c2, k1.e, slow_units.length}, slow_units.contact};
   }
 
-  static LineProblem<Real> problem(const Units& u, const StaticLineContact<Real>& slow, Real f,
-                                   Real vtau) {
+  static line::LineProblem<Real> problem(const Units& u, const StaticLineContact<Real>& slow,
+                                         Real f, Real vtau) {
     return {u.c1, u.c2, vtau, f, slow.a0, slow.l, u.c1 * slow.a0 * slow.a0 * slow.l / 3};
   }
 
@@ -209,7 +211,7 @@ class LineSolver {
                                                            const Units& u, Real a_ref, Real b_over,
                                                            bool asymmetric = false) {
     LineShape<Real> shape =
-        profile_line_shape(s, a_ref, 2 * profile_static_terms, b_over, asymmetric);
+        line::profile_line_shape(s, a_ref, 2 * profile_static_terms, b_over, asymmetric);
     return {u.shape_in_units(std::move(shape)), u.penetration_in_units(s.d)};
   }
   /// The solve of a profile whose long-term static contact did not converge: not converged, its
@@ -269,11 +271,11 @@ class LineSolver {
   /// `drop` the roller's h(y) (a RollerDrop), `cold` the cold start's shape and penetration
   /// from the plane seed (ColdStart), `asymmetric` the contact of a drop that is not even
   /// (LineResidual's).
-  template <class Drop = ParabolicDrop, class ColdStart = EllipseStart>
+  template <class Drop = line::ParabolicDrop, class ColdStart = EllipseStart>
   Solution rolling_from(const LineScene<Real>& scene, const Units& u,
-                        const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
-                        const Solution* given, const Drop& drop = {}, const ColdStart& cold = {},
-                        bool asymmetric = false) const;
+                        const StaticLineContact<Real>& slow, const line::LineProblem<Real>& prob,
+                        Real c, const Solution* given, const Drop& drop = {},
+                        const ColdStart& cold = {}, bool asymmetric = false) const;
 
   /// A converged solution whose shape and penetration are finite.
   static bool usable_seed(const Solution& s) {
@@ -299,7 +301,7 @@ class LineSolver {
   /// or, for nullptr, from the cold start `cold`; rolling_from's step.
   template <class Drop, class ColdStart>
   Solution rolling(const LineScene<Real>& scene, const Units& u,
-                   const StaticLineContact<Real>& slow, const LineProblem<Real>& prob, Real c,
+                   const StaticLineContact<Real>& slow, const line::LineProblem<Real>& prob, Real c,
                    const Solution* start, const Drop& drop, const ColdStart& cold,
                    bool asymmetric = false) const;
 
@@ -347,7 +349,7 @@ class LineSolver {
   static void require_contact(AnySolution& sol) {
     const Real a_centre = sol.shape.a(sol.shape.centre);
     if (!sol.converged || (sol.d > 0 && a_centre > 0 && sol.shape.l > 0)) return;
-    set_stop(
+    detail::set_stop(
         sol, StopCode::not_a_contact,
         "a root of the line equations that is not a contact (d = " + detail::format_value(sol.d) +
             ", a at the centre = " + detail::format_value(a_centre) +
@@ -374,8 +376,8 @@ class LineSolver {
   /// (line_chi_sign_warnings), for a solution of either path (one term or a spectrum).
   template <class AnySolution>
   static void add_domain_warnings(AnySolution& sol, const Units& u) {
-    append_warnings(sol, line_domain_warnings(u.shape_in_caller_units(sol.shape)));
-    append_warnings(sol, line_chi_sign_warnings(sol.converged, sol.chi));
+    detail::append_warnings(sol, line::line_domain_warnings(u.shape_in_caller_units(sol.shape)));
+    detail::append_warnings(sol, line::line_chi_sign_warnings(sol.converged, sol.chi));
   }
 
   /// The domain of the line theory (line_domain_warnings) and, for the paper's ellipsoid
@@ -386,7 +388,7 @@ class LineSolver {
     add_domain_warnings(sol, u);
     if (!bounds) return;
     const Real tolerance = root_tolerance() + (sol.root ? Real(0) : sol.residual);
-    append_warnings(sol, line_bound_warnings(sol, tolerance));
+    detail::append_warnings(sol, line::line_bound_warnings(sol, tolerance));
   }
 
   /// The line solver for a spectrum (docs/theory.md section 14): the terms classified at the

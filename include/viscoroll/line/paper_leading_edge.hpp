@@ -32,7 +32,7 @@
 #include <viscoroll/special/line_kernels.hpp>
 #include <viscoroll/special/struve_neumann.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 /// The right side of Eq. (44) in the cancellation-free form (L2) of docs/theory.md section 3,
 ///   R[Q](y) = int (Q(y') - Q(y)) V^-1 kappa(|y' - y| / V) dy' + Q(y) [psi((l - y)/V) +
@@ -171,7 +171,7 @@ struct PaperLeadingEdge {
     using std::exp;
     const PaperLeadingEdgeOperators<Real, Quadrature> paper(s.l);
     const auto q = [&](Real yp) {
-      return strip_functions(p.c1, s.a(yp), s.b(yp), p.vtau, p.f).q;  // Eq. (46)
+      return plane::strip_functions(p.c1, s.a(yp), s.b(yp), p.vtau, p.f).q;  // Eq. (46)
     };
     return exp(x0 / p.vtau) * paper.kernel(q, p.vtau, y);
   }
@@ -183,4 +183,4 @@ struct PaperLeadingEdge {
 template <RealScalar Real, class Quadrature = GaussLegendre<Real, 12>>
 using PaperLineResidual = LineResidual<Real, Quadrature, PaperLeadingEdge>;
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line

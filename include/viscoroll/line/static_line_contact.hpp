@@ -36,6 +36,8 @@ struct StaticLineContact {
   Real d;   ///< penetration, (1/2) C1 a0^2 ln(4 l / a0)
 };
 
+namespace line {
+
 /// The static line contact in units of powers of two: a0 and l in 2^length, d in
 /// 2^(curvature + 2 length), for c1 and c2 given in a unit of curvature 2^curvature.
 template <RealScalar Real>
@@ -43,6 +45,8 @@ struct StaticLineContactInUnits {
   StaticLineContact<Real> contact;  ///< a0, l, d in the units
   int length;                       ///< binary exponent of the unit of length
 };
+
+}  // namespace line
 
 namespace detail {
 
@@ -65,6 +69,8 @@ Real static_line_aspect(Real ratio) {
 
 }  // namespace detail
 
+namespace line {
+
 /// Kalker's static line contact for curvatures c1 > 0, 0 < c2 < 8 e^-3 c1 (normal numbers, in a
 /// unit of curvature 2^curvature) and compliance_load = (1 - nu)/(2 pi mu) * P = m 2^e in the
 /// units of curvature times length cubed (Eq. 47: C1 a0^2 l / 3 = compliance load), unit of
@@ -74,7 +80,7 @@ Real static_line_aspect(Real ratio) {
 /// a multiple of 3 where it is not. Throws std::invalid_argument naming the parameter.
 template <RealScalar Real>
 StaticLineContactInUnits<Real> static_line_contact_in_units(Real c1, Real c2,
-                                                            Binary<Real> compliance_load,
+                                                            detail::Binary<Real> compliance_load,
                                                             int curvature = 0) {
   using std::cbrt;
   using std::log;
@@ -90,19 +96,21 @@ StaticLineContactInUnits<Real> static_line_contact_in_units(Real c1, Real c2,
   // Load (47): C1 a0^2 l / 3 = compliance load, l = rho a0.
   const Real x = 3 * compliance_load.m / (c1 * rho);
   const int e = compliance_load.e - curvature;
-  const Real caller = times_power_of_two(x, e);
-  Binary<Real> a0;
+  const Real caller = detail::times_power_of_two(x, e);
+  detail::Binary<Real> a0;
   using std::abs;
   if ((boost::math::isfinite)(caller) && abs(caller) >= (std::numeric_limits<Real>::min)()) {
-    a0 = binary(cbrt(caller));
+    a0 = detail::binary(cbrt(caller));
   } else {
     const int third = (e >= 0 ? e : e - 2) / 3;  // floor(e / 3)
-    a0 = binary(cbrt(times_power_of_two(x, e - 3 * third)));
+    a0 = detail::binary(cbrt(detail::times_power_of_two(x, e - 3 * third)));
     a0.e += third;
   }
   const Real a = a0.m;
   return {{a, rho * a, c1 * a * a * log(4 * rho) / 2}, a0.e};
 }
+
+}  // namespace line
 
 /// Kalker's static line contact for curvatures c1 > 0, 0 < c2 < 8 e^-3 c1, and
 /// compliance_load = (1 - nu)/(2 pi mu) * P > 0 (mu the modulus that acts: long-term for a slow
@@ -113,9 +121,9 @@ StaticLineContact<Real> static_line_contact(Real c1, Real c2, Real compliance_lo
   detail::require_positive("c1", c1);
   detail::require_positive("c2", c2);
   detail::require_positive("compliance * load", compliance_load);
-  const Binary<Real> k1 = binary(c1);
-  const auto s = static_line_contact_in_units(k1.m, times_power_of_two(c2, -k1.e),
-                                              binary(compliance_load), k1.e);
+  const detail::Binary<Real> k1 = detail::binary(c1);
+  const auto s = line::static_line_contact_in_units(k1.m, detail::times_power_of_two(c2, -k1.e),
+                                                    detail::binary(compliance_load), k1.e);
   const auto inputs = [&] {
     return "c1 = " + detail::format_value(c1) + ", c2 = " + detail::format_value(c2) +
            ", compliance * load = " + detail::format_value(compliance_load);

@@ -13,6 +13,8 @@
 
 namespace viscoroll {
 
+namespace line {
+
 /// omega(t) of (G3) with end layer e: 1 - t^2 for e = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 +
 /// e^2), which rises from the ends over 1 - t^2 ~ e^2 to 1 (a flat contact with short ends).
 template <RealScalar Real>
@@ -21,6 +23,8 @@ Real static_profile_weight(Real e, Real t) {
   if (!(e < std::numeric_limits<Real>::infinity())) return w;
   return (1 + e * e) * w / (w + e * e);
 }
+
+}  // namespace line
 
 /// The static line contact of a roller profile: the contact [y_minus, y_plus], the penetration d,
 /// the half width a(y) of (G3) and the load per length F0(y) = C1 a(y)^2/4 (Eq. 33 at V tau = 0).
@@ -85,7 +89,7 @@ struct StaticProfileContact {
     return a_ref * sqrt(weight(u)) * exp(series(u));
   }
   /// omega(t) of (G3): 1 - t^2 for epsilon = +inf, else (1 + e^2)(1 - t^2)/(1 - t^2 + e^2).
-  Real weight(Real u) const { return static_profile_weight(epsilon, u); }
+  Real weight(Real u) const { return line::static_profile_weight(epsilon, u); }
   /// F0(y) = C1 a^2/4 (Eq. 33 at V tau = 0).
   Real f0(Real yy) const {
     const Real h = a(yy);

@@ -161,7 +161,7 @@ class PlaneSolver {
   /// The rolling solution in `units` (StripUnits; c1, c, vtau and a0 given in them): (P5) for
   /// A = a/a0, then b, G, Q, F0 and chi. Its numbers are in the units too (F0, Q and chi carry
   /// the curvature's: PlaneSolver::solve converts them).
-  Solution rolling(StripUnits units, Real c1, Real c, Real f, Real vtau, Real a0) const {
+  Solution rolling(plane::StripUnits units, Real c1, Real c, Real f, Real vtau, Real a0) const {
     using special::bessel_i1_over_i0;
     using special::bessel_i2_over_i0;
     using special::bessel_k1_over_k0;
@@ -170,7 +170,7 @@ class PlaneSolver {
     // (P5): h(A) = A^2 + 2 f/(1+f) v A R(A) - 1, increasing from h < 0 at the glassy width
     // A = (1+f)^(-1/2) to h > 0 at the long-term width A = 1.
     auto h = [&](Real A) {
-      const Real r_i = bessel_i1_over_i0(strip_alpha(A, v, f));
+      const Real r_i = bessel_i1_over_i0(plane::strip_alpha(A, v, f));
       const Real r_k = bessel_k1_over_k0(A / v);
       return A * A + 2 * creep * v * A * (r_i * r_k / (r_i + r_k)) - 1;
     };
@@ -198,19 +198,19 @@ class PlaneSolver {
     using std::abs;
     const Real residual = abs(h(A));
     const Real a = A * a0;
-    const Real alpha = strip_alpha(a, vtau, f);
+    const Real alpha = plane::strip_alpha(a, vtau, f);
     const Real r_i = bessel_i1_over_i0(alpha);
     const Real r_k = bessel_k1_over_k0(a / vtau);
     // (P4): b from (36) = leading-edge condition (G = a b K1/K0); then G (36) and Q (46) of the
     // strip, and F0 = C1 a0^2 / 4 from the load, Eq. (33) with (52).
     const Real b = vtau * creep * r_i / (r_i + r_k);
-    const auto sf = strip_functions_from_ratio(c1, a, b, vtau, f, r_i);
+    const auto sf = plane::strip_functions_from_ratio(c1, a, b, vtau, f, r_i);
     const Real g = sf.g, q = sf.q;
     const Real f0 = c1 * a0 * a0 / 4;
     // (P7): chi = C1 xbar, xbar = [2 b G + V tau (f a^2 I2/I0 + 2 a b r_I) / (1+f)] / a0^2,
     // every term non-negative (the paper's (54) cancels as V tau grows).
     const Real delta = bessel_i2_over_i0(alpha);
-    const Real xbar = strip_first_moment(a, b, g, vtau, f, r_i, delta) / (a0 * a0);
+    const Real xbar = plane::strip_first_moment(a, b, g, vtau, f, r_i, delta) / (a0 * a0);
     return Solution{.a = a,
                     .b = b,
                     .g = g,
@@ -233,7 +233,8 @@ class PlaneSolver {
   /// b = G = Q = chi = 0, F0 = C1 a^2 / 4 (Eq. 33 with G = 0). The glassy limit is reported in
   /// this form with f = 0 (the instantaneous compliance alone), as LineSolver reports its glassy
   /// closed form.
-  static Solution static_solution(StripUnits units, Real c1, Real a, Real a0, Real c, Real f) {
+  static Solution static_solution(plane::StripUnits units, Real c1, Real a, Real a0, Real c,
+                                  Real f) {
     const StripPressure<Real, Quadrature> strip(units, c1, a, Real(0), Real(0), Real(0), f, c);
     return Solution{.a = a,
                     .b = Real(0),
@@ -251,7 +252,7 @@ class PlaneSolver {
   }
 
   /// The glassy closed form is within eps of the rolling solution (strip_is_glassy, (P6)).
-  static bool glassy(Real vtau, Real f, Real a0) { return strip_is_glassy(vtau, f, a0); }
+  static bool glassy(Real vtau, Real f, Real a0) { return plane::strip_is_glassy(vtau, f, a0); }
 
   /// A spectrum (docs/theory.md, section 12): at this speed every retardation length
   /// lambda_k = V tau_k is relaxed (lambda_k <= eps a, folded into the compliance), glassy
@@ -267,11 +268,12 @@ class PlaneSolver {
     const auto& terms = material_.memory_terms();
     detail::require_spectrum_terms(terms.size(), "plane");
     const Real creep_ratio = material_.creep_ratio();  // F = sum f_k
-    const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
-    const auto creep = binary<Real>(1 + creep_ratio);
-    const auto a0 =
-        binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
-    const StripUnits units{a0.e, c1.e, cc.e};
+    const auto c1 = detail::binary<Real>(scene.c1), cc = detail::binary<Real>(c),
+               load = detail::binary<Real>(scene.load);
+    const auto creep = detail::binary<Real>(1 + creep_ratio);
+    const auto a0 = detail::binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m,
+                                              cc.e + creep.e + load.e - c1.e);
+    const plane::StripUnits units{a0.e, c1.e, cc.e};
     const Real a_glassy = a0.m / sqrt(1 + creep_ratio);
     // Classify the terms at this speed (lengths in units); relaxed ones folded into the
     // compliance, c (1 + relaxed), the active f scaled by 1/(1 + relaxed) (R6b).
@@ -295,14 +297,14 @@ class PlaneSolver {
     } else {
       // Near-equal times merged where the closed form would lose digits ((S19), (S20)).
       const auto conditioned = detail::condition_spectrum(
-          std::move(active), times_power_of_two(Real(1), units.length) / scene.speed);
+          std::move(active), detail::times_power_of_two(Real(1), units.length) / scene.speed);
       const auto& merged = conditioned.terms;
-      const SpectrumLengths<Real>& lengths = conditioned.lengths;
+      const plane::SpectrumLengths<Real>& lengths = conditioned.lengths;
       s.spectrum_error = conditioned.spectrum_error;
       const Real creep_active = lengths.creep_ratio;
       // (S8) load: a^2 + 2 G0 = a0^2, i.e. h(A) = A^2 + 2 G0(A a0) / a0^2 - 1, A = a / a0.
       auto h = [&](Real A) {
-        const auto st = spectrum_strip(A * a0_eff, lengths);
+        const auto st = plane::spectrum_strip(A * a0_eff, lengths);
         return A * A + 2 * st.g0 / (a0_eff * a0_eff) - 1;
       };
       Real lo = 1 / sqrt(1 + creep_active), hi = Real(1);
@@ -326,7 +328,7 @@ class PlaneSolver {
         converged = abs(bracket.second - bracket.first) <= 8 * eps * abs(A);
       }
       const Real a = A * a0_eff;
-      const auto st = spectrum_strip(a, lengths);
+      const auto st = plane::spectrum_strip(a, lengths);
       using std::abs;
       s.a = a;
       s.b = st.b;
@@ -370,8 +372,8 @@ class PlaneSolver {
   /// A solution `s` computed in `units` (one term or a spectrum) in the caller's units: each
   /// number zero or normal and finite, else an error naming the `inputs` (docs/errors.md).
   template <class Inputs>
-  static void in_caller_units(Solution& s, const StripUnits& units, const Binary<Real>& load,
-                              const Inputs& inputs) {
+  static void in_caller_units(Solution& s, const plane::StripUnits& units,
+                              const detail::Binary<Real>& load, const Inputs& inputs) {
     const int length = units.length, area = 2 * length, curvature = units.curvature;
     const auto in = [&](Real x, int exponent, std::string_view what) {
       return detail::representable(x, exponent, what, inputs);
@@ -387,7 +389,7 @@ class PlaneSolver {
     s.f0 = in(s.f0, curvature + area, "F0 of Eq. (33)");
     if constexpr (!spectrum) s.q = in(s.q, curvature + area, "Q of Eq. (46)");
     s.chi = in(s.chi, curvature + length, "the rolling-friction coefficient chi of Eq. (51)");
-    s.chi_rounding = times_power_of_two(s.chi_rounding, curvature + length);
+    s.chi_rounding = detail::times_power_of_two(s.chi_rounding, curvature + length);
     in(mean_pressure, load.e - length, "the mean pressure load / (2 a)");
   }
 
@@ -409,21 +411,24 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
     const Real f = memory.f;
     // Scaling (docs/theory.md): lengths in units of a power of two near a0, C1 and c in units of
     // their own powers of two; every product below rounds as in the caller's units.
-    const auto c1 = binary<Real>(scene.c1), cc = binary<Real>(c), load = binary<Real>(scene.load);
-    const auto creep = binary<Real>(1 + f);
+    const auto c1 = detail::binary<Real>(scene.c1), cc = detail::binary<Real>(c),
+               load = detail::binary<Real>(scene.load);
+    const auto creep = detail::binary<Real>(1 + f);
     // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
-    const auto a0 =
-        binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m, cc.e + creep.e + load.e - c1.e);
-    const StripUnits units{a0.e, c1.e, cc.e};
+    const auto a0 = detail::binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m,
+                                              cc.e + creep.e + load.e - c1.e);
+    const plane::StripUnits units{a0.e, c1.e, cc.e};
     Solution s = [&] {
       if constexpr (Material::is_viscoelastic) {
-        const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-        const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - units.length);
+        const auto speed = detail::binary<Real>(scene.speed),
+                   tau = detail::binary<Real>(memory.tau);
+        const Real vtau =
+            detail::times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - units.length);
         if (f > 0 && vtau > std::numeric_limits<Real>::epsilon() * a0.m) {
           if (!glassy(vtau, f, a0.m)) return rolling(units, c1.m, cc.m, f, vtau, a0.m);
           // (P6) V tau -> inf: Hertz with the instantaneous compliance, a = a0 (1 + f)^(-1/2).
-          const auto a = binary_sqrt<Real>(4 * cc.m * load.m / c1.m, cc.e + load.e - c1.e);
-          const Real a_glassy = times_power_of_two(a.m, a.e - units.length);
+          const auto a = detail::binary_sqrt<Real>(4 * cc.m * load.m / c1.m, cc.e + load.e - c1.e);
+          const Real a_glassy = detail::times_power_of_two(a.m, a.e - units.length);
           return static_solution(units, c1.m, a_glassy, a0.m, cc.m, Real(0));
         }
       }

@@ -57,9 +57,9 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
   using std::abs;
   const Real tol = Real(options_.tolerance);
   // chi's floor: 1e-6 C1 a_H, the long-term Hertz semi-axis in the caller's units.
-  const HertzContact<Real> hertz = hertz_in_units(u, material_.creep_ratio());
+  const bem::HertzContact<Real> hertz = hertz_in_units(u, material_.creep_ratio());
   const Real chi_floor =
-      Real(1e-6) * times_power_of_two(u.scene.c1 * hertz.a, u.displacement - u.length);
+      Real(1e-6) * detail::times_power_of_two(u.scene.c1 * hertz.a, u.displacement - u.length);
   double setup = 0, seconds = 0;
   std::optional<Solution> coarse, last;
   std::optional<BemErrorEstimate<Real>> before_change;  // the change between the two grids before
@@ -87,7 +87,7 @@ auto BemSolver<Real, Material, Quadrature>::refine(const Scaled& u, const Soluti
     for (int j = 0; j < s.grid.ny; ++j)
       for (int i = 0; i < s.grid.nx; ++i)
         if (s.p(i, j) > 0) reach = std::max(reach, abs(s.grid.x(i)) + 3 * s.grid.hx / 2);
-    if (reach > 0) across = std::min(across, times_power_of_two(reach, -u.length));
+    if (reach > 0) across = std::min(across, detail::times_power_of_two(reach, -u.length));
     // A grid too coarse for the contact (fewer than 3 cells across) is refined; any other
     // failure is returned as it is.
     if (!s.converged) {

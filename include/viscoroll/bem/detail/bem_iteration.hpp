@@ -29,7 +29,7 @@ namespace viscoroll {
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::initial_state(
-    const BemScene<Real>& scene, const BemGrid<Real>& grid, const HertzContact<Real>& hertz,
+    const BemScene<Real>& scene, const BemGrid<Real>& grid, const bem::HertzContact<Real>& hertz,
     const std::vector<PronyTerm<Real>>& terms, Real compliance, const Solution* start) const
     -> numerics::ActiveSetState<Real> {
   const std::size_t n = grid.size();
@@ -46,7 +46,7 @@ auto BemSolver<Real, Material, Quadrature>::initial_state(
   }
   Real weight = 0;
   for (const auto& t : terms) weight += t.f * hertz.a / (hertz.a + scene.speed * t.tau);
-  const auto guess = hertz_contact(scene.c1, scene.c2, (1 + weight) * compliance, scene.load);
+  const auto guess = bem::hertz_contact(scene.c1, scene.c2, (1 + weight) * compliance, scene.load);
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       const Real px = guess.pressure(grid.x(i), grid.y(j));
@@ -96,7 +96,7 @@ auto BemSolver<Real, Material, Quadrature>::local_bed_state(
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::iterate(
-    const BemScene<Real>& scene, const BemGrid<Real>& grid, const HertzContact<Real>& hertz,
+    const BemScene<Real>& scene, const BemGrid<Real>& grid, const bem::HertzContact<Real>& hertz,
     const bem::ConvolutionOperator<Real>& op, const std::vector<Complex>& symbol,
     const std::vector<PronyTerm<Real>>& terms, Real compliance, int length_exponent,
     const Solution* start, const bem::InfluenceTable<Real, Quadrature>* local) const -> Solution {
@@ -133,7 +133,7 @@ auto BemSolver<Real, Material, Quadrature>::iterate(
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::measure(
-    const BemScene<Real>& scene, const BemGrid<Real>& grid, const HertzContact<Real>& hertz,
+    const BemScene<Real>& scene, const BemGrid<Real>& grid, const bem::HertzContact<Real>& hertz,
     const bem::ConvolutionOperator<Real>& op, const std::vector<Real>& h,
     numerics::ActiveSetState<Real> state, const numerics::ActiveSetReport& report) -> Solution {
   using std::abs;

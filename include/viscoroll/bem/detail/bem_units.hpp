@@ -30,8 +30,9 @@ auto BemSolver<Real, Material, Quadrature>::scaled(const BemScene<Real>& scene) 
   const std::string inputs = prologue();
   detail::representable(
       1 + f, 0, "1 + f", [&] { return inputs; }, false);
-  const Binary<Real> bc = binary(c), bf = binary(1 + f), bp = binary(scene.load),
-                     b1 = binary(scene.c1), b2 = binary(scene.c2);
+  const detail::Binary<Real> bc = detail::binary(c), bf = detail::binary(1 + f),
+                             bp = detail::binary(scene.load), b1 = detail::binary(scene.c1),
+                             b2 = detail::binary(scene.c2);
   const int compliance_e = bc.e + bf.e;
   const int sum = bp.e + compliance_e - b1.e;
   const int length = sum >= 0 ? (sum + 1) / 3 : -((-sum + 1) / 3);
@@ -42,13 +43,13 @@ auto BemSolver<Real, Material, Quadrature>::scaled(const BemScene<Real>& scene) 
   const int displacement = 2 * length + b1.e;
   const int pressure = displacement - length - compliance_e;
   Scaled out{.scene = {.c1 = b1.m,
-                       .c2 = times_power_of_two(b2.m, b2.e - b1.e),
-                       .load = times_power_of_two(bp.m, bp.e - pressure - 2 * length),
+                       .c2 = detail::times_power_of_two(b2.m, b2.e - b1.e),
+                       .load = detail::times_power_of_two(bp.m, bp.e - pressure - 2 * length),
                        .speed = Real(1),
                        .profile = {},
-                       .y_min = times_power_of_two(scene.y_min, -length),
-                       .y_max = times_power_of_two(scene.y_max, -length)},
-             .compliance = times_power_of_two(bc.m, -bf.e),
+                       .y_min = detail::times_power_of_two(scene.y_min, -length),
+                       .y_max = detail::times_power_of_two(scene.y_max, -length)},
+             .compliance = detail::times_power_of_two(bc.m, -bf.e),
              .terms = {},
              .length = length,
              .displacement = displacement,
@@ -57,21 +58,22 @@ auto BemSolver<Real, Material, Quadrature>::scaled(const BemScene<Real>& scene) 
   if (scene.profile) {
     const auto& h = scene.profile;
     out.scene.profile = [h, length, displacement](Real x, Real y) {
-      return times_power_of_two(h(times_power_of_two(x, length), times_power_of_two(y, length)),
-                                -displacement);
+      return detail::times_power_of_two(
+          h(detail::times_power_of_two(x, length), detail::times_power_of_two(y, length)),
+          -displacement);
     };
   }
   if (substrate_) {
-    out.thickness = times_power_of_two(substrate_->thickness, -length);
+    out.thickness = detail::times_power_of_two(substrate_->thickness, -length);
     out.sizing = sizing_factor(out);
   }
-  const Binary<Real> bv = binary(scene.speed);
+  const detail::Binary<Real> bv = detail::binary(scene.speed);
   for (const auto& t : bem::memory_terms_of(material_)) {
-    const Binary<Real> bt = binary(t.tau);
+    const detail::Binary<Real> bt = detail::binary(t.tau);
     out.terms.push_back(
         PronyTerm<Real>{t.f, scene.speed == 0 || t.tau == 0
                                  ? Real(0)
-                                 : times_power_of_two(bv.m * bt.m, bv.e + bt.e - length)});
+                                 : detail::times_power_of_two(bv.m * bt.m, bv.e + bt.e - length)});
   }
   return out;
 }
@@ -80,12 +82,13 @@ auto BemSolver<Real, Material, Quadrature>::scaled(const BemScene<Real>& scene) 
 template <RealScalar Real, ConstitutiveModel Material, class Quadrature>
 requires detail::BemSolverArguments<Real, Material, Quadrature>
 auto BemSolver<Real, Material, Quadrature>::grid_in_units(const Scaled& u,
-                                                          const HertzContact<Real>& hertz, int n,
-                                                          Real across) const -> BemGrid<Real> {
+                                                          const bem::HertzContact<Real>& hertz,
+                                                          int n, Real across) const
+    -> BemGrid<Real> {
   const int m = static_cast<int>(std::ceil(options_.extent * n - 1e-9));
   int my = m;
   if (u.scene.profile && u.sizing < 1) {
-    const auto half_space = hertz_contact(
+    const auto half_space = bem::hertz_contact(
         u.scene.c1, u.scene.c2, (1 + material_.creep_ratio()) * u.compliance, u.scene.load);
     my = static_cast<int>(std::ceil(options_.extent * n * half_space.b / hertz.b - 1e-9));
   }
@@ -100,7 +103,7 @@ auto BemSolver<Real, Material, Quadrature>::sizing_factor(const Scaled& u) const
   using std::log;
   const Real lt = (1 + material_.creep_ratio()) * u.compliance;
   const auto g = [&](Real ln_f) {
-    const auto hz = hertz_contact(u.scene.c1, u.scene.c2, lt * exp(ln_f), u.scene.load);
+    const auto hz = bem::hertz_contact(u.scene.c1, u.scene.c2, lt * exp(ln_f), u.scene.load);
     const W t = substrate_->surface_factor(W(2) / W(std::min(hz.a, hz.b)), u.thickness);
     return Real(log(t)) - ln_f;
   };
@@ -121,11 +124,11 @@ auto BemSolver<Real, Material, Quadrature>::start_in_units(const Solution* start
     -> std::optional<Solution> {
   if (start == nullptr) return std::nullopt;
   Solution s = *start;
-  s.grid.hx = times_power_of_two(s.grid.hx, -u.length);
-  s.grid.hy = times_power_of_two(s.grid.hy, -u.length);
-  for (auto& p : s.pressure) p = times_power_of_two(p, -u.pressure);
-  s.load = times_power_of_two(s.load, -u.pressure - 2 * u.length);
-  s.d = times_power_of_two(s.d, -u.displacement);
+  s.grid.hx = detail::times_power_of_two(s.grid.hx, -u.length);
+  s.grid.hy = detail::times_power_of_two(s.grid.hy, -u.length);
+  for (auto& p : s.pressure) p = detail::times_power_of_two(p, -u.pressure);
+  s.load = detail::times_power_of_two(s.load, -u.pressure - 2 * u.length);
+  s.d = detail::times_power_of_two(s.d, -u.displacement);
   if (!(s.load > 0) || !(boost::math::isfinite)(s.load) || !(boost::math::isfinite)(s.d))
     return std::nullopt;
   return s;
@@ -147,19 +150,20 @@ void BemSolver<Real, Material, Quadrature>::to_caller_units(Solution& s, const S
     detail::representable(s.load, 2 * k + pe, "the load", inputs, false);
     detail::representable(s.chi, w - k, "chi", inputs);
   }
-  for (auto& p : s.pressure) p = times_power_of_two(p, pe);
-  for (auto& g : s.gap) g = times_power_of_two(g, w);
-  s.grid.hx = times_power_of_two(s.grid.hx, k);
-  s.grid.hy = times_power_of_two(s.grid.hy, k);
-  s.d = times_power_of_two(s.d, w);
-  s.a0 = times_power_of_two(s.a0, k);
-  s.b0 = times_power_of_two(s.b0, k);
-  s.l = times_power_of_two(s.l, k);
+  for (auto& p : s.pressure) p = detail::times_power_of_two(p, pe);
+  for (auto& g : s.gap) g = detail::times_power_of_two(g, w);
+  s.grid.hx = detail::times_power_of_two(s.grid.hx, k);
+  s.grid.hy = detail::times_power_of_two(s.grid.hy, k);
+  s.d = detail::times_power_of_two(s.d, w);
+  s.a0 = detail::times_power_of_two(s.a0, k);
+  s.b0 = detail::times_power_of_two(s.b0, k);
+  s.l = detail::times_power_of_two(s.l, k);
   // chi = C1 x_mean = (C1' 2^(w - 2k)) (x_mean' 2^k).
-  s.chi = times_power_of_two(s.chi, w - k);
-  s.load = times_power_of_two(s.load, 2 * k + pe);
-  s.long_term = {times_power_of_two(s.long_term.a, k), times_power_of_two(s.long_term.b, k),
-                 times_power_of_two(s.long_term.d, w), times_power_of_two(s.long_term.p0, pe)};
+  s.chi = detail::times_power_of_two(s.chi, w - k);
+  s.load = detail::times_power_of_two(s.load, 2 * k + pe);
+  s.long_term = {
+      detail::times_power_of_two(s.long_term.a, k), detail::times_power_of_two(s.long_term.b, k),
+      detail::times_power_of_two(s.long_term.d, w), detail::times_power_of_two(s.long_term.p0, pe)};
 }
 
 }  // namespace viscoroll

@@ -17,14 +17,14 @@
 #include <viscoroll/line/line_shape.hpp>
 #include <viscoroll/special/bessel_ratio.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
 inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_point(
     const LineShape<Real>& s, Real d, Real y, Real& r34, Real& rle, PointWork& work) const {
   const Real c1 = p_.c1;
-  const auto here = strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
+  const auto here = plane::strip_functions(c1, s.a(y), s.b(y), p_.vtau, p_.f);
   if (!(here.a > 0) || !(here.a + here.b > 0)) return false;
   LineNodes<Real>& nd = work.nd;
   rule_->point(s, y, here.a + here.b, nd);
@@ -33,7 +33,7 @@ inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_p
   df0.resize(nd.yp.size());
   dq.resize(nd.yp.size());
   for (std::size_t j = 0; j < nd.yp.size(); ++j) {
-    const auto there = strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), p_.vtau, p_.f);
+    const auto there = plane::strip_functions(c1, s.a(nd.yp[j]), s.b(nd.yp[j]), p_.vtau, p_.f);
     df0[j] = there.f0 - here.f0;
     dq[j] = there.q - here.q;
   }
@@ -46,7 +46,7 @@ inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::at_p
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
 inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::point_rows(
-    Real d, Real y, const StripFunctions<Real>& here, const LineNodes<Real>& nd,
+    Real d, Real y, const plane::StripFunctions<Real>& here, const LineNodes<Real>& nd,
     const std::vector<Real>& df0, Real right, Real& r34, Real& rle) const -> EdgeTerms {
   const Real c1 = p_.c1, v = p_.vtau, a = here.a, b = here.b;
   // (34), scaled by C1 a_ref^2.
@@ -57,7 +57,7 @@ inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::poin
   const Real z = a / v;
   const Real k0 = special::bessel_k0_scaled(z), k1 = special::bessel_k1_scaled(z);
   const Real bessel = c1 * (a * b * k1 - here.g * k0);  // C1 e^z {a b K1 - G K0}, Eq. (42)
-  const Real r_i = special::bessel_i1_over_i0_fast(strip_alpha(a, v, p_.f));
+  const Real r_i = special::bessel_i1_over_i0_fast(plane::strip_alpha(a, v, p_.f));
   const Real slope = c1 * a * (k1 + r_i * k0);  // d(bessel)/db at fixed a
   rle = (bessel - right) / (slope * p_.a_ref);
   return {k0, k1, slope};
@@ -183,13 +183,13 @@ inline auto LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::stri
   using std::sqrt;
   const Real c1 = p_.c1, v = p_.vtau, f = p_.f;
   if (!(a > 0)) return {{Real(0), b, Real(0), Real(0), Real(0)}, 0, 0, 0, 0, 0, 0, 0, 0};
-  const Real alpha = strip_alpha(a, v, f);
+  const Real alpha = plane::strip_alpha(a, v, f);
   const Real ri = special::bessel_i1_over_i0_fast(alpha);  // I1/I0
   // DLMF 10.29.2: (I1/I0)' = 1 - (I1/I0)/x - (I1/I0)^2; 1/2 - 3x^2/16 + ... at 0.
   const Real ri_x = alpha < sqrt(std::numeric_limits<Real>::epsilon())
                         ? Real(0.5)
                         : Real(1 - ri / alpha - ri * ri);
-  const StripFunctions<Real> value = strip_functions_from_ratio(c1, a, b, v, f, ri);
+  const plane::StripFunctions<Real> value = plane::strip_functions_from_ratio(c1, a, b, v, f, ri);
   const Real k = v * f / (1 + f) - b, g = value.g;
   const Real g_a = k * (ri + alpha * ri_x), g_b = -a * ri;
   return {value,
@@ -229,4 +229,4 @@ inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::shap
   }
 }
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line

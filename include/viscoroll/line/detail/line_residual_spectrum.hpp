@@ -28,7 +28,7 @@
 #include <viscoroll/line/line_residual.hpp>
 #include <viscoroll/line/line_shape.hpp>
 
-namespace viscoroll {
+namespace viscoroll::line {
 
 template <RealScalar Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 requires LineResidualArguments<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>
@@ -137,7 +137,7 @@ inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spec
   detail::SpectrumMemoryWork<Real> work;
   std::vector<Real> qs(line_.size()), line_right;
   Matrix dright;  // d right[k] / d x, row k
-  SpectrumStripSlopes<Real> ss;
+  plane::SpectrumStripSlopes<Real> ss;
   for (int i = 0; i < m; ++i) {
     const Real y = s.centre + t_[i] * s.l;
     const Functions here = functions(s, mo, y);
@@ -176,8 +176,8 @@ inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spec
     if (jac) spectrum_right_slopes(here, slopes, as, f0s, bks, qs, tv, ti.data(), dright);
     // The left side of (34): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2].
     const Real lhs34 = near_field_strip(nd, df0, here.f0, here.a);
-    const SpectrumStrip<Real> st =
-        spectrum_strip(here.a, p_.lengths, &right, p_.c1, jac ? &ss : nullptr);
+    const plane::SpectrumStrip<Real> st =
+        plane::spectrum_strip(here.a, p_.lengths, &right, p_.c1, jac ? &ss : nullptr);
     const Real a = here.a, b = st.b;
     // (34) with (S13): FP[F0] + F0 ln[16 (l^2 - y^2)/a^2] = -C1 a^2/4 - C1 (Pi_g'(0) + e2)
     //   - C1 b (b - 2 Lambda_1)/2 - C2 y^2/2 + d, with the strip's b.
@@ -295,4 +295,4 @@ inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spec
   }
 }
 
-}  // namespace viscoroll
+}  // namespace viscoroll::line

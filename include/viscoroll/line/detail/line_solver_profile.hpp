@@ -42,7 +42,7 @@ auto LineSolver<Real, Material, Quadrature>::profile_static_failure(
   sol.reason = "the long-term static contact of the profile: " + slow_c.reason +
                " (the line theory needs a slender contact, its collocation points a half "
                "width apart, docs/theory.md (G5); a short contact is the BEM's)";
-  copy_warnings(sol, slow_c);
+  detail::copy_warnings(sol, slow_c);
   return sol;
 }
 
@@ -51,8 +51,8 @@ requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule
 template <class Profile>
 void LineSolver<Real, Material, Quadrature>::check_body_end(Solution& sol, const Profile& roller,
                                                             const Units& u) {
-  const Real l_caller = times_power_of_two(sol.shape.l, u.length);
-  const Real c_caller = times_power_of_two(sol.shape.centre, u.length);
+  const Real l_caller = detail::times_power_of_two(sol.shape.l, u.length);
+  const Real c_caller = detail::times_power_of_two(sol.shape.centre, u.length);
   const Real y_plus = c_caller + l_caller, y_minus = c_caller - l_caller;
   if (sol.converged && !(y_plus < roller.y_max() && y_minus > roller.y_min())) {
     sol.converged = false;
@@ -95,8 +95,8 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
     };
     const std::pair<LineShape<Real>, Real> long_term = in_units(slow_c, Real(0));
     const StaticLineContact<Real> slow{long_term.first.a_ref, long_term.first.l, long_term.second};
-    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
+    const auto speed = detail::binary<Real>(scene.speed), tau = detail::binary<Real>(memory.tau);
+    const Real vtau = detail::times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
     const auto static_solution = [&](const std::pair<LineShape<Real>, Real>& s, Real ff,
                                      const char* reason) {
       Solution sol = solution(u, slow, c, ff, Real(0), s.first, s.second);
@@ -107,21 +107,21 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
     Solution sol = [&] {
       if constexpr (Material::is_viscoelastic) {
         if (f > 0 && vtau > 0) {
-          if (strip_is_glassy(vtau, f, slow.a0)) {
+          if (plane::strip_is_glassy(vtau, f, slow.a0)) {
             const auto fast = static_profile_contact(roller, c * scene.load, profile_static_terms);
             if (fast.converged)
               return static_solution(in_units(fast, Real(0)), Real(0),
                                      "glassy limit (static profile contact)");
           }
           if (vtau > std::numeric_limits<Real>::epsilon() * slow.a0) {
-            const LineProblem<Real> prob{
+            const line::LineProblem<Real> prob{
                 u.c1,
                 Real(0),
                 vtau,
                 f,
                 slow.a0,
                 slow.l,
-                times_power_of_two((1 + f) * c * scene.load, -(d_unit + u.length))};
+                detail::times_power_of_two((1 + f) * c * scene.load, -(d_unit + u.length))};
             // (RP8): the static contact at the compliance load whose (48) is (a/a0)^(2/3) times
             // the long-term one's, b the plane's.
             const auto cold = [&](const StaticLineContact<Real>&, const PlaneSeed& ps) {
@@ -133,7 +133,7 @@ auto LineSolver<Real, Material, Quadrature>::solve_profile(
             const LineScene<Real> plane{
                 .c1 = c1, .c2 = Real(0), .load = scene.load, .speed = scene.speed};
             return rolling_from(plane, u, slow, prob, c, start,
-                                ProfileDrop<Profile>(roller, u.length, u.curvature), cold,
+                                line::ProfileDrop<Profile>(roller, u.length, u.curvature), cold,
                                 asymmetric);
           }
         }

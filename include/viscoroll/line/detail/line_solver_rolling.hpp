@@ -45,19 +45,19 @@ auto LineSolver<Real, Material, Quadrature>::solve(const LineScene<Real>& scene,
     const std::pair<Units, StaticLineContact<Real>> long_term = ellipse_units(scene, c, f, inputs);
     const Units u = long_term.first;
     const StaticLineContact<Real> slow = long_term.second;
-    const auto speed = binary<Real>(scene.speed), tau = binary<Real>(memory.tau);
-    const Real vtau = times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
+    const auto speed = detail::binary<Real>(scene.speed), tau = detail::binary<Real>(memory.tau);
+    const Real vtau = detail::times_power_of_two(Real(speed.m * tau.m), speed.e + tau.e - u.length);
     const Real eps = std::numeric_limits<Real>::epsilon();
     Solution sol = [&] {
       if constexpr (Material::is_viscoelastic) {
         if (f > 0 && vtau > 0) {
-          if (strip_is_glassy(vtau, f, slow.a0)) {
+          if (plane::strip_is_glassy(vtau, f, slow.a0)) {
             // Glassy limit: the instantaneous compliance; every strip's b, chi within eps (P6).
             const auto [fast_units, fast] = ellipse_units(scene, c, Real(0), inputs);
             const int shift = fast_units.length - u.length;  // to the units of the long-term one
-            const StaticLineContact<Real> glassy{times_power_of_two(fast.a0, shift),
-                                                 times_power_of_two(fast.l, shift),
-                                                 times_power_of_two(fast.d, 2 * shift)};
+            const StaticLineContact<Real> glassy{detail::times_power_of_two(fast.a0, shift),
+                                                 detail::times_power_of_two(fast.l, shift),
+                                                 detail::times_power_of_two(fast.d, 2 * shift)};
             // Reported as the static strip of the instantaneous compliance: f = 0, V tau = 0.
             return closed_form(u, glassy, slow, c, Real(0), "glassy limit (closed form)");
           }
@@ -76,7 +76,7 @@ requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule
 template <class Drop, class ColdStart>
 auto LineSolver<Real, Material, Quadrature>::rolling_from(
     const LineScene<Real>& scene, const Units& u, const StaticLineContact<Real>& slow,
-    const LineProblem<Real>& prob, Real c, const Solution* given, const Drop& drop,
+    const line::LineProblem<Real>& prob, Real c, const Solution* given, const Drop& drop,
     const ColdStart& cold, bool asymmetric) const -> Solution {
   if (given == nullptr) return rolling(scene, u, slow, prob, c, nullptr, drop, cold, asymmetric);
   // The seed in the solver's units (a shape from a far scene may leave the range there).
@@ -117,10 +117,10 @@ auto LineSolver<Real, Material, Quadrature>::plane_seed(const LineScene<Real>& s
   using std::abs;
   using limits = std::numeric_limits<Real>;
   // W = C1 a0^2 / (4 (1 + f) c), plane a0 = slow.a0, formed as its power-of-two scaled self.
-  const Binary<Real> cc = binary(c);
-  const Real w_plane = times_power_of_two(u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m),
-                                          u.curvature + 2 * u.length - cc.e);
-  const Real a0 = times_power_of_two(slow.a0, u.length);
+  const detail::Binary<Real> cc = detail::binary(c);
+  const Real w_plane = detail::times_power_of_two(u.c1 * slow.a0 * slow.a0 / (4 * (1 + f) * cc.m),
+                                                  u.curvature + 2 * u.length - cc.e);
+  const Real a0 = detail::times_power_of_two(slow.a0, u.length);
   if ((boost::math::isfinite)(w_plane) && w_plane >= (limits::min)() &&
       (boost::math::isfinite)(a0) && a0 >= (limits::min)()) {
     try {
@@ -146,11 +146,11 @@ requires std::same_as<typename Material::real_type, Real> && NodalQuadratureRule
 template <class Drop, class ColdStart>
 auto LineSolver<Real, Material, Quadrature>::rolling(const LineScene<Real>& scene, const Units& u,
                                                      const StaticLineContact<Real>& slow,
-                                                     const LineProblem<Real>& prob, Real c,
+                                                     const line::LineProblem<Real>& prob, Real c,
                                                      const Solution* start, const Drop& drop,
                                                      const ColdStart& cold, bool asymmetric) const
     -> Solution {
-  using Residual = LineResidual<Real, Quadrature, ExteriorLeadingEdge, Drop>;
+  using Residual = line::LineResidual<Real, Quadrature, line::ExteriorLeadingEdge, Drop>;
   const Real f = prob.f, vtau = prob.vtau;
   LineShape<Real> shape;
   Real d;
@@ -267,7 +267,7 @@ auto LineSolver<Real, Material, Quadrature>::make(const Units& u,
   } else {
     sol.chi = detail::line_rolling_friction<Quadrature>(sol);
   }
-  add_warnings(sol, u, std::same_as<typename Residual::drop_type, ParabolicDrop>);
+  add_warnings(sol, u, std::same_as<typename Residual::drop_type, line::ParabolicDrop>);
   if (converged && !root)
     add_warning(sol, WarningCode::least_squares_minimum, detail::minimum_warning(rmax));
   return sol;

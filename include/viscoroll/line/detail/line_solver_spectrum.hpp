@@ -60,7 +60,7 @@ struct LineSolver<Real, Material, Quadrature>::SpectrumRun {
   Real eff_load{};                ///< (1 + F') c_eff P
   Real eff_a0{};                  ///< a profile's eff a(0), in the caller's units
   std::optional<StaticProfileContact<Real>> eff_profile{};  ///< a profile's eff, caller's units
-  LineProblem<Real> prob{};                                 ///< the residual's constants
+  line::LineProblem<Real> prob{};                           ///< the residual's constants
 };
 
 // solve_spectrum (documented at its declaration in line_solver.hpp): the steps below in order.
@@ -100,11 +100,11 @@ auto LineSolver<Real, Material, Quadrature>::solve_spectrum(const Scene& scene,
   // budget are folded or dropped as well (S21).
   auto classes =
       detail::classify_spectrum(terms, scene.speed, u.length, sqrt_eps * slow.a0, slow.a0,
-                                creep_ratio, line_spectrum_budget<Real>(), slow.l);
+                                creep_ratio, line::line_spectrum_budget<Real>(), slow.l);
   run.relaxed = classes.relaxed;
   // Near-equal times merged where the closed-form strip would lose digits ((S19), (S20)).
-  run.conditioned = detail::condition_spectrum(std::move(classes.active),
-                                               times_power_of_two(Real(1), u.length) / scene.speed);
+  run.conditioned = detail::condition_spectrum(
+      std::move(classes.active), detail::times_power_of_two(Real(1), u.length) / scene.speed);
   const auto& merged = run.conditioned.terms;
   run.c_eff = c * (1 + run.relaxed);
   Solution sol{};
@@ -189,7 +189,7 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_single(const SpectrumRun<S
       return elastic.solve(scene);
     }
     // tau back from lambda (units) through the speed: lambda 2^length / V.
-    const Real tau = times_power_of_two(merged[0].q, u.length) / scene.speed;
+    const Real tau = detail::times_power_of_two(merged[0].q, u.length) / scene.speed;
     const LineSolver<Real, StandardLinearSolid<Real>, Quadrature> sls(
         StandardLinearSolid<Real>(mu, Real(0), merged[0].w, tau), options_);
     // A seed with one active term is the standard linear solid's solution.
@@ -228,7 +228,7 @@ bool LineSolver<Real, Material, Quadrature>::spectrum_effective(SpectrumRun<Scen
   Real& eff_load = run.eff_load;
   Real& eff_a0 = run.eff_a0;
   std::optional<StaticProfileContact<Real>>& eff_profile = run.eff_profile;
-  const SpectrumLengths<Real>& lengths = run.conditioned.lengths;
+  const plane::SpectrumLengths<Real>& lengths = run.conditioned.lengths;
   // The static contact of the terms solved for, c_eff (1 + F'), in the same units: lengths
   // scale as the cube root of the compliance (Eq. 47 with (48)), d as its square; a profile's
   // is solved for (static_profile_contact, its a(0) in the caller's units eff_a0).
@@ -242,7 +242,7 @@ bool LineSolver<Real, Material, Quadrature>::spectrum_effective(SpectrumRun<Scen
     eff_a0 = eff_profile->a(eff_profile->centre());
     const auto in_units = profile_in_units(*eff_profile, u, eff_a0, Real(0), asymmetric);
     eff = {in_units.first.a_ref, in_units.first.l, in_units.second};
-    load_target = times_power_of_two(eff_load, -(u.curvature + 3 * u.length));
+    load_target = detail::times_power_of_two(eff_load, -(u.curvature + 3 * u.length));
   }
   run.prob = {.c1 = u.c1,
               .c2 = u.c2,
@@ -272,7 +272,7 @@ void LineSolver<Real, Material, Quadrature>::spectrum_start(const SpectrumRun<Sc
   const Real eff_load = run.eff_load, eff_a0 = run.eff_a0;
   const std::optional<StaticProfileContact<Real>>& eff_profile = run.eff_profile;
   const bool asymmetric = run.asymmetric;
-  const SpectrumLengths<Real>& lengths = run.conditioned.lengths;
+  const plane::SpectrumLengths<Real>& lengths = run.conditioned.lengths;
   // The cold start: the plane strip of the spectrum at the load whose long-term width is a0
   // ((S8), TOMS 748 as the plane solver), shrunk as the 3-D widths, (1 + F)^(-1/3).
   if (seed != nullptr) {
@@ -281,7 +281,7 @@ void LineSolver<Real, Material, Quadrature>::spectrum_start(const SpectrumRun<Sc
     d = u.penetration_in_units(seed->d);
   } else {
     const auto h = [&](Real A) {
-      const auto st = spectrum_strip(A * eff.a0, lengths);
+      const auto st = plane::spectrum_strip(A * eff.a0, lengths);
       return A * A + 2 * st.g0 / (eff.a0 * eff.a0) - 1;
     };
     std::uintmax_t max_iter = 200;
@@ -294,7 +294,7 @@ void LineSolver<Real, Material, Quadrature>::spectrum_start(const SpectrumRun<Sc
           boost::math::tools::eps_tolerance<Real>(std::numeric_limits<Real>::digits / 2), max_iter);
       A = (bracket.first + bracket.second) / 2;
     }
-    const auto ps = spectrum_strip(A * eff.a0, lengths);
+    const auto ps = plane::spectrum_strip(A * eff.a0, lengths);
     moments = {{ps.g0 / (A * A * eff.a0 * eff.a0)}, {ps.centroid / eff.a0}};
     if constexpr (ellipsoid) {
       const Real ratio = pow(A, Real(2) / 3);
@@ -322,8 +322,8 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_iterate(const SpectrumRun<
   const StaticLineContact<Real>& slow = run.slow;
   const Real c_eff = run.c_eff;
   const bool asymmetric = run.asymmetric;
-  const SpectrumLengths<Real>& lengths = run.conditioned.lengths;
-  const LineProblem<Real>& prob = run.prob;
+  const plane::SpectrumLengths<Real>& lengths = run.conditioned.lengths;
+  const line::LineProblem<Real>& prob = run.prob;
   Solution sol = run.base;
   LineShape<Real> shape;
   LineSpectrumMoments<Real> moments;
@@ -335,13 +335,13 @@ auto LineSolver<Real, Material, Quadrature>::spectrum_iterate(const SpectrumRun<
   numerics::LeastSquaresOutcome out;
   const auto drop = [&] {
     if constexpr (ellipsoid)
-      return ParabolicDrop{};
+      return line::ParabolicDrop{};
     else
-      return ProfileDrop<std::remove_cvref_t<decltype(scene.roller)>>(scene.roller, u.length,
-                                                                      u.curvature);
+      return line::ProfileDrop<std::remove_cvref_t<decltype(scene.roller)>>(scene.roller, u.length,
+                                                                            u.curvature);
   }();
-  std::optional<LineResidual<Real, Quadrature, ExteriorLeadingEdge,
-                             std::remove_const_t<decltype(drop)>, dynamic_memory_terms>>
+  std::optional<line::LineResidual<Real, Quadrature, line::ExteriorLeadingEdge,
+                                   std::remove_const_t<decltype(drop)>, dynamic_memory_terms>>
       last;
   Vector x;
   Matrix jac;                // Levenberg-Marquardt's Jacobian at its last iterate

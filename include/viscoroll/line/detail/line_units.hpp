@@ -24,8 +24,8 @@ struct LineUnits {
   /// A profile's units: c1's power of two, a length a power of two near the long-term a(0)
   /// (a0_caller, in the caller's units).
   static LineUnits profile(Real c1_caller, Real a0_caller) {
-    const auto k1 = binary<Real>(c1_caller);
-    return LineUnits{k1.m, Real(0), k1.e, binary<Real>(a0_caller).e};
+    const auto k1 = detail::binary<Real>(c1_caller);
+    return LineUnits{k1.m, Real(0), k1.e, detail::binary<Real>(a0_caller).e};
   }
 
   /// A shape's lengths (a_ref, l and the centre) from the caller's units into these.
@@ -38,14 +38,14 @@ struct LineUnits {
   }
   /// A penetration from the caller's units into these.
   Real penetration_in_units(Real d) const {
-    return times_power_of_two(d, -(curvature + 2 * length));
+    return detail::times_power_of_two(d, -(curvature + 2 * length));
   }
 
  private:
   static LineShape<Real> scaled(LineShape<Real> shape, int exponent) {
-    shape.a_ref = times_power_of_two(shape.a_ref, exponent);
-    shape.l = times_power_of_two(shape.l, exponent);
-    shape.centre = times_power_of_two(shape.centre, exponent);
+    shape.a_ref = detail::times_power_of_two(shape.a_ref, exponent);
+    shape.l = detail::times_power_of_two(shape.l, exponent);
+    shape.centre = detail::times_power_of_two(shape.centre, exponent);
     return shape;
   }
 };
@@ -58,7 +58,7 @@ template <RealScalar Real, class Solution, class Inputs>
 Solution in_caller_units(Solution sol, const LineUnits<Real>& u, Real c1, const Inputs& inputs) {
   const int length = u.length, curvature = u.curvature;
   const auto in = [&](Real x, int exponent, std::string_view what, bool zero_allowed) {
-    if (!sol.converged) return times_power_of_two(x, exponent);
+    if (!sol.converged) return detail::times_power_of_two(x, exponent);
     return representable(x, exponent, what, inputs, zero_allowed);
   };
   const Real centre = sol.shape.centre;  // 0 for a symmetric contact

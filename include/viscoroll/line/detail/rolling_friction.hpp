@@ -31,11 +31,11 @@ Real line_rolling_friction(const LineSolution<Real, Quadrature>& sol) {
     const Real y = both ? Real(sol.shape.centre + (k < half ? nodes[j] : -nodes[j])) : nodes[j];
     const auto s = sol.functions(y);
     if (!(s.a > 0)) continue;
-    const Real alpha = strip_alpha(s.a, sol.vtau, sol.f);
-    const Real vn =
-        sol.c1 / 4 *
-        strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f, special::bessel_i1_over_i0_fast(alpha),
-                           special::bessel_i2_over_i0_fast(alpha));
+    const Real alpha = plane::strip_alpha(s.a, sol.vtau, sol.f);
+    const Real vn = sol.c1 / 4 *
+                    plane::strip_first_moment(s.a, s.b, s.g, sol.vtau, sol.f,
+                                              special::bessel_i1_over_i0_fast(alpha),
+                                              special::bessel_i2_over_i0_fast(alpha));
     num += weights[j] * vn;
     den += weights[j] * s.f0;
   }

@@ -49,11 +49,11 @@ struct SpectrumMemoryWork {
 /// the per-node form Q_k = F0 (1 - c/lambda_k) does not; the near field's 1/s-like kernel is summed
 /// per node on dq itself.
 template <class Quadrature, RealScalar Real>
-void exterior_right_terms(const LineNodes<Real>& nd, Real x0, const std::vector<Real>& lambda,
+void exterior_right_terms(const line::LineNodes<Real>& nd, Real x0, const std::vector<Real>& lambda,
                           const std::vector<Real>& f0, const std::vector<Real>& c,
                           const std::vector<Real>& q, std::vector<Real>& right,
                           SpectrumMemoryWork<Real>& work,
-                          std::vector<ExteriorSlopes<Real>>* slopes = nullptr) {
+                          std::vector<line::ExteriorSlopes<Real>>* slopes = nullptr) {
   using std::exp;
   using std::hypot;
   using std::log;
@@ -170,7 +170,7 @@ void exterior_right_terms(const LineNodes<Real>& nd, Real x0, const std::vector<
     const Real memory = s2 + q[k] * ends_2[kk];
     right[k] = (s1 + q[k] * ends_l) - memory;
     if (!slopes) continue;
-    ExteriorSlopes<Real>& sl = (*slopes)[k];
+    line::ExteriorSlopes<Real>& sl = (*slopes)[k];
     sl.weight.resize(ns);
     Real s_l = 0;
     for (std::size_t j = 0; j < ns; ++j) {

@@ -228,7 +228,7 @@ struct StaticProfileSolver {
         Real s1 = 0, s2 = 0;
         for (int j = 0; j < nf; ++j) {
           const Real u = cos(pi * Real(2 * j + 1) / Real(2 * nf));
-          const Real v = log(sliced(u) / static_profile_weight(ee, u));
+          const Real v = log(sliced(u) / line::static_profile_weight(ee, u));
           s1 += v;
           s2 += v * v;
         }
@@ -238,7 +238,8 @@ struct StaticProfileSolver {
       std::vector<Real> g(n);
       for (int j = 0; j < n; ++j) {
         const Real u = cos(pi * Real(2 * j + 1) / Real(2 * n));
-        g[j] = log(4 * sliced(u) / (c1 * a_ref * a_ref * static_profile_weight(epsilon, u))) / 2;
+        g[j] =
+            log(4 * sliced(u) / (c1 * a_ref * a_ref * line::static_profile_weight(epsilon, u))) / 2;
       }
       for (int k = 0; k < n; ++k) {
         using std::cos;
@@ -255,7 +256,7 @@ struct StaticProfileSolver {
   }
   // omega of (G3) and ln((1 - t^2)/omega) (0 for e = +inf), at the points of a discretisation.
   /// omega(t) of (G3) with the end layer `epsilon`.
-  Real weight(Real t) const { return static_profile_weight(epsilon, t); }
+  Real weight(Real t) const { return line::static_profile_weight(epsilon, t); }
   /// ln((1 - t^2)/omega), 0 for e = +inf.
   Real log_ratio(Real t) const {
     using std::log;

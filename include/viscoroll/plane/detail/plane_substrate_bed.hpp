@@ -152,12 +152,12 @@ auto PlaneSubstrateSolver<Real, Material, Body>::solve_bed(const Problem& pr) co
       s.error_a <= tol * s.a && s.error_chi <= tol * std::max(abs(s.chi), Real(1e-6) * pr.c1 * s.a);
   s.converged = root_ok && met;
   if (!root_ok)
-    set_stop(s, StopCode::root_finder_failed,
-             "the root finder for the leading edge did not converge");
+    detail::set_stop(s, StopCode::root_finder_failed,
+                     "the root finder for the leading edge did not converge");
   else if (!met)
-    set_stop(s, StopCode::tolerance_not_met,
-             "the quadrature's estimated errors (a " + detail::format_value(s.error_a) + ", chi " +
-                 detail::format_value(s.error_chi) + ") exceed the tolerance");
+    detail::set_stop(s, StopCode::tolerance_not_met,
+                     "the quadrature's estimated errors (a " + detail::format_value(s.error_a) +
+                         ", chi " + detail::format_value(s.error_chi) + ") exceed the tolerance");
   return s;
 }
 

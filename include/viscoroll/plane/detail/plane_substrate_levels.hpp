@@ -295,17 +295,18 @@ auto PlaneSubstrateSolver<Real, Material, Body>::solve_body(const Problem& pr) c
   for (const auto& l : levels) roots = roots && l.root_ok;
   s.converged = met && roots && lowest >= -tol * s.peak_.pressure;
   if (!roots)
-    set_stop(s, StopCode::root_finder_failed,
-             "the root finder for the half width a did not converge");
+    detail::set_stop(s, StopCode::root_finder_failed,
+                     "the root finder for the half width a did not converge");
   else if (!met)
-    set_stop(s, StopCode::tolerance_not_met,
-             "the estimated errors (a " + detail::format_value(s.error_a) + ", d " +
-                 detail::format_value(s.error_d) + ", chi " + detail::format_value(s.error_chi) +
-                 ") exceed the tolerance at max_terms = " + std::to_string(options_.max_terms));
+    detail::set_stop(
+        s, StopCode::tolerance_not_met,
+        "the estimated errors (a " + detail::format_value(s.error_a) + ", d " +
+            detail::format_value(s.error_d) + ", chi " + detail::format_value(s.error_chi) +
+            ") exceed the tolerance at max_terms = " + std::to_string(options_.max_terms));
   else if (!s.converged)
-    set_stop(s, StopCode::not_a_contact,
-             "the pressure is negative (" + detail::format_value(lowest) +
-                 "): the contact is not one interval with square-root edges");
+    detail::set_stop(s, StopCode::not_a_contact,
+                     "the pressure is negative (" + detail::format_value(lowest) +
+                         "): the contact is not one interval with square-root edges");
   return s;
 }
 
