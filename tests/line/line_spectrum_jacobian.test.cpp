@@ -35,17 +35,8 @@ using Residual =
 /// narrower than the static one, offset from the expansions' leading terms by `offset`.
 double worst_column_error(double v, int terms, double offset) {
   const double c1 = 1, c2 = (std::log(20.0) - 1) / 25;
-  const auto lengths = viscoroll_test::three_term_lengths(v);
   const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
-  const viscoroll::line::LineProblem<double> problem{
-      .c1 = c1,
-      .c2 = c2,
-      .vtau = 0,
-      .f = 0,
-      .a_ref = slow.a0,
-      .l_ref = slow.l,
-      .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
-      .lengths = lengths};
+  const auto problem = viscoroll_test::three_term_problem(v, c1, c2);
   const Residual res(problem, terms);
   REQUIRE(res.spectrum());
   REQUIRE(res.unknowns() == 4 * terms + 5);

@@ -82,17 +82,8 @@ TEST_CASE("line tilt: the asymmetric spectrum residual's Jacobian against centra
   // The three-term spectrum of tests/line/line_spectrum_jacobian.test.cpp, bound 1e-8 as there
   // (measured here 1e-10 ... 3e-10).
   for (const double v : {0.3, 1.0, 4.0}) {
-    const auto lengths = viscoroll_test::three_term_lengths(v);
     const auto slow = viscoroll::static_line_contact(c1, c2, 1.0);
-    const viscoroll::line::LineProblem<double> problem{
-        .c1 = c1,
-        .c2 = c2,
-        .vtau = 0,
-        .f = 0,
-        .a_ref = slow.a0,
-        .l_ref = slow.l,
-        .load_target = c1 * slow.a0 * slow.a0 * slow.l / 3,
-        .lengths = lengths};
+    const auto problem = viscoroll_test::three_term_problem(v, c1, c2);
     for (const int terms : {2, 4}) {
       const viscoroll::line::LineResidual<double, Rule, viscoroll::line::ExteriorLeadingEdge,
                                           TiltedDrop, viscoroll::dynamic_memory_terms>

@@ -254,6 +254,23 @@ class PlaneSolver {
   /// The glassy closed form is within eps of the rolling solution (strip_is_glassy, (P6)).
   static bool glassy(Real vtau, Real f, Real a0) { return plane::strip_is_glassy(vtau, f, a0); }
 
+  /// The scene in the strip's units (docs/theory.md, "Scaling"): C1, c and the load W as m 2^e,
+  /// and the long-term half width a0 = sqrt(4 c (1 + F) W / C1) (the load (33) with (52):
+  /// a^2 + 2 G = a0^2) in a power of two of its own, the unit of length; every product rounds as
+  /// in the caller's units.
+  struct Scaled {
+    detail::Binary<Real> c1, c, load, a0;
+    plane::StripUnits units;
+  };
+  static Scaled scaled(const PlaneScene<Real>& scene, Real c, Real creep_ratio) {
+    const auto c1 = detail::binary<Real>(scene.c1), cc = detail::binary<Real>(c),
+               load = detail::binary<Real>(scene.load);
+    const auto creep = detail::binary<Real>(1 + creep_ratio);
+    const auto a0 = detail::binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m,
+                                              cc.e + creep.e + load.e - c1.e);
+    return {c1, cc, load, a0, {a0.e, c1.e, cc.e}};
+  }
+
   /// A spectrum (docs/theory.md, section 12): at this speed every retardation length
   /// lambda_k = V tau_k is relaxed (lambda_k <= eps a, folded into the compliance), glassy
   /// (strip_is_glassy: dropped, its creep never starts) or active; the active terms' relaxation
@@ -268,12 +285,9 @@ class PlaneSolver {
     const auto& terms = material_.memory_terms();
     detail::require_spectrum_terms(terms.size(), "plane");
     const Real creep_ratio = material_.creep_ratio();  // F = sum f_k
-    const auto c1 = detail::binary<Real>(scene.c1), cc = detail::binary<Real>(c),
-               load = detail::binary<Real>(scene.load);
-    const auto creep = detail::binary<Real>(1 + creep_ratio);
-    const auto a0 = detail::binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m,
-                                              cc.e + creep.e + load.e - c1.e);
-    const plane::StripUnits units{a0.e, c1.e, cc.e};
+    const Scaled sc = scaled(scene, c, creep_ratio);
+    const auto &c1 = sc.c1, &cc = sc.c, &load = sc.load, &a0 = sc.a0;
+    const plane::StripUnits& units = sc.units;
     const Real a_glassy = a0.m / sqrt(1 + creep_ratio);
     // Classify the terms at this speed (lengths in units); relaxed ones folded into the
     // compliance, c (1 + relaxed), the active f scaled by 1/(1 + relaxed) (R6b).
@@ -409,15 +423,9 @@ auto PlaneSolver<Real, Material, Quadrature>::solve(const PlaneScene<Real>& scen
     const Real c = inputs.c;
     const PronyTerm<Real> memory = detail::single_memory_term(material_);
     const Real f = memory.f;
-    // Scaling (docs/theory.md): lengths in units of a power of two near a0, C1 and c in units of
-    // their own powers of two; every product below rounds as in the caller's units.
-    const auto c1 = detail::binary<Real>(scene.c1), cc = detail::binary<Real>(c),
-               load = detail::binary<Real>(scene.load);
-    const auto creep = detail::binary<Real>(1 + f);
-    // Load (33) with (52): a^2 + 2 G = a0^2 = 4 c (1 + f) W / C1.
-    const auto a0 = detail::binary_sqrt<Real>(4 * cc.m * creep.m * load.m / c1.m,
-                                              cc.e + creep.e + load.e - c1.e);
-    const plane::StripUnits units{a0.e, c1.e, cc.e};
+    const Scaled sc = scaled(scene, c, f);
+    const auto &c1 = sc.c1, &cc = sc.c, &load = sc.load, &a0 = sc.a0;
+    const plane::StripUnits& units = sc.units;
     Solution s = [&] {
       if constexpr (Material::is_viscoelastic) {
         const auto speed = detail::binary<Real>(scene.speed),
