@@ -114,11 +114,12 @@ struct ParabolicDrop {
 };
 
 /// What LineResidual takes: a NodalQuadratureRule, a LeadingEdgeCondition, a RollerDrop, and
-/// MemoryTerms 1 or dynamic_memory_terms.
+/// MemoryTerms 1, or dynamic_memory_terms with (L6) (ExteriorLeadingEdge: a spectrum has no other).
 template <class Real, class Quadrature, class LeadingEdge, class Drop, int MemoryTerms>
 concept LineResidualArguments = NodalQuadratureRule<Quadrature, Real> &&
     LeadingEdgeCondition<LeadingEdge, Real, Quadrature> && RollerDrop<Drop, Real> &&
-    (MemoryTerms == 1 || MemoryTerms == dynamic_memory_terms);
+    (MemoryTerms == 1 ||
+     (MemoryTerms == dynamic_memory_terms && std::same_as<LeadingEdge, ExteriorLeadingEdge>));
 
 /// Residual of the line equations at collocation points; `Quadrature` a NodalQuadratureRule,
 /// `LeadingEdge` a LeadingEdgeCondition, `Drop` a RollerDrop. The problem decides the material:
@@ -171,8 +172,6 @@ class LineResidual {
       detail::require(MemoryTerms == dynamic_memory_terms, "memory terms", MemoryTerms,
                       "dynamic_memory_terms for a spectrum's problem");
       detail::require(oversampling == 1, "oversampling", oversampling, "1 for a spectrum");
-      detail::require(std::same_as<LeadingEdge, ExteriorLeadingEdge>, "leading edge", 0,
-                      "ExteriorLeadingEdge, (L6), for a spectrum");
       if constexpr (MemoryTerms != 1) init_spectrum(quadrature_tolerance);
     } else {
       scale_ = basis == LineBasis::s_mapped ? LineShape<Real>::mapped_scale(p_.vtau, p_.f, p_.a_ref)
@@ -273,17 +272,15 @@ class LineResidual {
     std::vector<Real> nodes, weights;
     rule_->load(s, asymmetric_, nodes, weights);
     Real sum = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j)
-      if constexpr (MemoryTerms != 1)
-        sum +=
-            weights[j] *
-            (spectrum_
-                 ? functions(s, mo, nodes[j]).f0
-                 : plane::strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0);
-      else
-        sum += weights[j] *
-               plane::strip_functions(p_.c1, s.a(nodes[j]), s.b(nodes[j]), p_.vtau, p_.f).f0;
+    for (std::size_t j = 0; j < nodes.size(); ++j) sum += weights[j] * f0_at(s, mo, nodes[j]);
     return sum;
+  }
+
+  /// F0 at y: one term's closed form (33), a spectrum's from its moments.
+  Real f0_at(const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Real y) const {
+    if constexpr (MemoryTerms != 1)
+      if (spectrum_) return functions(s, mo, y).f0;
+    return plane::strip_functions(p_.c1, s.a(y), s.b(y), p_.vtau, p_.f).f0;
   }
 
   /// A spectrum's int F0 (b + kappa) dy / int F0 dy over the contact: the pressure's centroid
@@ -395,7 +392,6 @@ class LineResidual {
   std::optional<LineNodeRule<Real, Quadrature>> rule_;
   std::vector<Real> t_;
   Real lambda_sum_ = 0;            ///< a spectrum's sum of lambda_k
-  std::vector<bool> line_term_;    ///< whether term k is a line term (S12)
   std::vector<std::size_t> line_;  ///< the indices of the line terms
   std::vector<Real> line_lambda_;  ///< their retardation lengths
 };

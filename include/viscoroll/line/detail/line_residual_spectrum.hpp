@@ -47,13 +47,11 @@ inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::init
   // leading-edge condition (S12); slower ones take the strip's own (plane) condition, right
   // side zero (S16): there the line correction is as large as its own error and the line
   // equations have no root (the slow regime, docs/theory.md section 4).
-  for (const Real& l : lam) {
-    line_term_.push_back(l >= slow_fraction() * p_.a_ref);
-    if (line_term_.back()) {
-      line_.push_back(line_term_.size() - 1);
-      line_lambda_.push_back(l);
+  for (std::size_t k = 0; k < lam.size(); ++k)
+    if (lam[k] >= slow_fraction() * p_.a_ref) {
+      line_.push_back(k);
+      line_lambda_.push_back(lam[k]);
     }
-  }
   rule_.emplace(basis_, scale_, n_, lam[0], lam[0] / mu[0] - 1, tolerance);
 }
 
@@ -191,8 +189,8 @@ inline bool LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spec
     Matrix& J = *jac;
     // The strip's outputs: d out = sum_k out_right[k] d right_k + out_a da, da = a d ln a.
     const auto strip_row = [&](const std::vector<Real>& by_right, Real by_a, Real scale, int row) {
-      for (std::size_t k = 0; k < mt; ++k)
-        if (line_term_[k] && by_right[k] != 0)
+      for (const std::size_t k : line_)
+        if (by_right[k] != 0)
           for (int c = 0; c < nu; ++c)
             J(row, c) += scale * by_right[k] * dright(Eigen::Index(k), c);
       for (int c = 0; c < n_; ++c) J(row, c) += scale * by_a * a * ti[c];
@@ -278,21 +276,25 @@ inline void LineResidual<Real, Quadrature, LeadingEdge, Drop, MemoryTerms>::spec
     const LineShape<Real>& s, const LineSpectrumMoments<Real>& mo, Vector& r, Matrix* jac) const {
   const int m = points(), il = log_length();
   const Real c1 = p_.c1;
-  const Real total = load(s, mo);
-  r[4 * m] = total / p_.load_target - 1;
-  if (jac) {
-    // d load = sum_j w_j dF0(y_j) on load()'s nodes (fixed in t), and load d ln l.
-    std::vector<Real> nodes, weights, t(series_values());
-    rule_->load(s, asymmetric_, nodes, weights);
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-      const Functions f = functions(s, mo, nodes[j]);
-      chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nodes[j])),
-                       t.data(), s.t_at(nodes[j]));
-      add_series_row(*jac, 4 * m, t.data(), 2 * f.f0, 0, c1 * f.a * f.a / 2, 0,
-                     weights[j] / p_.load_target);
-    }
-    (*jac)(4 * m, il) += total / p_.load_target;
+  if (!jac) {
+    r[4 * m] = load(s, mo) / p_.load_target - 1;
+    return;
   }
+  // load()'s sum, in its order, with d load = sum_j w_j dF0(y_j) on its nodes (fixed in t), and
+  // load d ln l.
+  std::vector<Real> nodes, weights, t(series_values());
+  rule_->load(s, asymmetric_, nodes, weights);
+  Real total = 0;
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    const Functions f = functions(s, mo, nodes[j]);
+    total += weights[j] * f.f0;
+    chebyshev_values(LineShape<Real>::coordinate(basis_, scale_, s.one_minus_t2(nodes[j])),
+                     t.data(), s.t_at(nodes[j]));
+    add_series_row(*jac, 4 * m, t.data(), 2 * f.f0, 0, c1 * f.a * f.a / 2, 0,
+                   weights[j] / p_.load_target);
+  }
+  r[4 * m] = total / p_.load_target - 1;
+  (*jac)(4 * m, il) += total / p_.load_target;
 }
 
 }  // namespace viscoroll::line
